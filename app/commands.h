@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace hdprior::app {
+
+// Each subcommand takes its arguments (after the subcommand name) and returns the exit status.
+// Bad input throws hdprior::Error, which main turns into one line and exit status 2.
+int runInfo(const std::vector<std::string>& args);
+int runExportMap(const std::vector<std::string>& args);
+
+}  // namespace hdprior::app

@@ -1,0 +1,54 @@
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <map>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "engine/error.h"
+
+namespace {
+
+using Command = std::function<int(const std::vector<std::string>&)>;
+
+const std::map<std::string, std::pair<Command, const char*>>& commands() {
+  static const std::map<std::string, std::pair<Command, const char*>> table = {
+      {"info", {hdprior::app::runInfo, "summarise an Argoverse 2 log: hdprior info LOG"}},
+      {"export-map", {hdprior::app::runExportMap, "write the HD-map rasters as GeoTIFFs: hdprior export-map LOG --out DIR"}},
+  };
+  return table;
+}
+
+void printUsage(std::FILE* out) {
+  std::fprintf(out, "usage: hdprior <command> [options]\ncommands:\n");
+  for (const auto& [name, entry] : commands()) std::fprintf(out, "  %-12s %s\n", name.c_str(), entry.second);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    printUsage(argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string name = argv[1];
+  const auto it = commands().find(name);
+  if (it == commands().end()) {
+    std::fprintf(stderr, "hdprior: unknown command '%s' (try hdprior --help)\n", name.c_str());
+    return 2;
+  }
+  try {
+    return it->second.first(std::vector<std::string>(argv + 2, argv + argc));
+  } catch (const hdprior::Error& e) {
+    std::fprintf(stderr, "hdprior %s: %s\n", name.c_str(), e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "hdprior %s: out of memory\n", name.c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hdprior %s: internal error: %s\n", name.c_str(), e.what());
+    return 1;
+  }
+}

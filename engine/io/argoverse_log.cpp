@@ -1,0 +1,102 @@
+#include "engine/io/argoverse_log.h"
+
+#include <algorithm>
+
+#include "engine/error.h"
+
+namespace hdprior {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<int64_t> listSweeps(const fs::path& lidarDir) {
+  std::error_code ec;
+  if (!fs::is_directory(lidarDir, ec)) throw Error(lidarDir.string(), "sweep folder not found");
+  std::vector<int64_t> stamps;
+  for (const fs::directory_entry& e : fs::directory_iterator(lidarDir, ec)) {
+    const fs::path& p = e.path();
+    if (p.extension() != ".feather") continue;
+    const std::string stem = p.stem().string();
+    if (stem.empty() || stem.size() > 19 || !std::all_of(stem.begin(), stem.end(), ::isdigit)) {
+      throw Error(p.string(), "sweep file name is not a nanosecond timestamp");
+    }
+    stamps.push_back(std::stoll(stem));
+  }
+  if (ec) throw Error(lidarDir.string(), "cannot list: " + ec.message());
+  std::sort(stamps.begin(), stamps.end());
+  return stamps;
+}
+
+// The single file in `dir` whose name contains all of `parts` and ends with `suffix`.
+fs::path findOne(const fs::path& dir, const std::vector<std::string>& parts, const std::string& suffix,
+                 const char* what) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const bool match = name.size() >= suffix.size() && name.ends_with(suffix) &&
+                       std::all_of(parts.begin(), parts.end(),
+                                   [&](const std::string& p) { return name.find(p) != std::string::npos; });
+    if (match) found.push_back(e.path());
+  }
+  if (found.empty()) throw Error(dir.string(), std::string("no ") + what + " found");
+  if (found.size() > 1) throw Error(dir.string(), std::string("more than one ") + what + " found");
+  return found.front();
+}
+
+// "log_map_archive_<log>____PIT_city_47896.json" -> "PIT".
+std::string cityFromMapName(const fs::path& vectorMap) {
+  const std::string name = vectorMap.filename().string();
+  const size_t start = name.rfind("____");
+  const size_t end = name.find("_city_", start == std::string::npos ? 0 : start);
+  if (start == std::string::npos || end == std::string::npos) return "unknown";
+  return name.substr(start + 4, end - start - 4);
+}
+
+}  // namespace
+
+ArgoverseLog::ArgoverseLog(const fs::path& dir, size_t sweepCacheSize)
+    : dir_(dir), cacheSize_(std::max<size_t>(1, sweepCacheSize)) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) throw Error(dir.string(), "log directory not found");
+  if (!fs::is_directory(dir, ec)) throw Error(dir.string(), "is not a directory");
+  id_ = fs::absolute(dir).lexically_normal().filename().string();
+  if (id_.empty()) id_ = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+  sweepTimestamps_ = listSweeps(dir / "sensors" / "lidar");
+  cityTEgo_ = readEgoPoses(dir / "city_SE3_egovehicle.feather");
+  calibration_ = readSensorCalibration(dir / "calibration" / "egovehicle_SE3_sensor.feather");
+  const fs::path mapDir = dir / "map";
+  if (!fs::is_directory(mapDir, ec)) throw Error(mapDir.string(), "map folder not found");
+  mapFiles_.vectorMap = findOne(mapDir, {"log_map_archive_"}, ".json", "vector map (log_map_archive_*.json)");
+  mapFiles_.groundHeight = findOne(mapDir, {"_ground_height_surface____"}, ".npy", "ground-height raster (*.npy)");
+  mapFiles_.sim2 = findOne(mapDir, {"___img_Sim2_city"}, ".json", "Sim2 file (*___img_Sim2_city.json)");
+  city_ = cityFromMapName(mapFiles_.vectorMap);
+}
+
+fs::path ArgoverseLog::sweepPath(size_t index) const {
+  if (index >= sweepTimestamps_.size()) {
+    throw Error(dir_.string(), "sweep index " + std::to_string(index) + " out of range (" +
+                                   std::to_string(sweepTimestamps_.size()) + " sweeps)");
+  }
+  return dir_ / "sensors" / "lidar" / (std::to_string(sweepTimestamps_[index]) + ".feather");
+}
+
+std::shared_ptr<const LidarSweep> ArgoverseLog::sweep(size_t index) const {
+  const fs::path path = sweepPath(index);
+  {
+    std::lock_guard lock(cacheMutex_);
+    for (auto it = cache_.begin(); it != cache_.end(); ++it) {
+      if (it->first == index) {
+        cache_.splice(cache_.begin(), cache_, it);
+        return it->second;
+      }
+    }
+  }
+  auto loaded = std::make_shared<const LidarSweep>(readLidarSweep(path));
+  std::lock_guard lock(cacheMutex_);
+  cache_.emplace_front(index, loaded);
+  if (cache_.size() > cacheSize_) cache_.pop_back();
+  return loaded;
+}
+
+}  // namespace hdprior

@@ -1,0 +1,60 @@
+#include "test_data.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace hdprior::test {
+namespace fs = std::filesystem;
+
+fs::path sharedDataDir() {
+  const char* env = std::getenv("HDPRIOR_SHARED_DATA");
+  return fs::path(env ? env : HDPRIOR_SHARED_DATA);
+}
+
+fs::path sharedLog() {
+  const fs::path log = sharedDataDir() / "av2" / "7fab2350-7eaf-3b7e-a39d-6937a4c1bede";
+  if (!fs::is_directory(log / "sensors" / "lidar")) {
+    ADD_FAILURE() << "the shared Argoverse 2 test log is missing: expected it at " << log
+                  << " (the folder ../shared/data beside the repository, or set HDPRIOR_SHARED_DATA)";
+    throw std::runtime_error("shared data missing");
+  }
+  return log;
+}
+
+fs::path freshOutputDir(const std::string& name) {
+  const fs::path dir = fs::path(HDPRIOR_TEST_OUTPUT) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+static std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+CommandResult runHdprior(const std::string& args) {
+  const fs::path dir = fs::path(HDPRIOR_TEST_OUTPUT) / "cmd";
+  fs::create_directories(dir);
+  const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(std::rand());
+  const fs::path out = dir / ("out" + tag), err = dir / ("err" + tag);
+  const std::string cmd = std::string("'") + HDPRIOR_BINARY + "' " + args + " >'" + out.string() + "' 2>'" +
+                          err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  CommandResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+}  // namespace hdprior::test

@@ -1,0 +1,23 @@
+#pragma once
+#include <filesystem>
+#include <string>
+
+namespace hdprior::test {
+
+// The real Argoverse 2 log in ../shared/data. Fails the calling test (never skips) with a
+// message saying where the data is expected when it is not there.
+std::filesystem::path sharedLog();
+std::filesystem::path sharedDataDir();
+
+// A fresh, empty directory for one test's outputs, under the build tree.
+std::filesystem::path freshOutputDir(const std::string& name);
+
+// Runs the hdprior binary with arguments; returns exit status, captures stdout/stderr.
+struct CommandResult {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+CommandResult runHdprior(const std::string& args);
+
+}  // namespace hdprior::test
