@@ -12,7 +12,7 @@ namespace hdprior::json_reading {
 inline nlohmann::json parse(const std::string& text, const std::string& source) {
   try {
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for number overflow
     throw Error(source, std::string("invalid JSON: ") + e.what());
   }
 }
