@@ -11,15 +11,21 @@ using arrow::Type;
 
 namespace {
 
-std::vector<float> coordinate(const arrow::Table& t, const char* name, const std::string& source) {
+// Writes column `name` (float16 or float32, no nulls) into `member` of every point.
+void readCoordinate(const arrow::Table& t, const char* name, float LidarPoint::*member, std::vector<LidarPoint>& points,
+                    const std::string& source) {
   const Column& c = t.column(name, source);
-  if (c.type != Type::Float16 && c.type != Type::Float32) {
+  if (c.nullCount() > 0) throw Error(source, std::string("column '") + name + "' has null values");
+  if (c.type == Type::Float32) {
+    const auto v = c.as<float>();
+    for (size_t i = 0; i < points.size(); ++i) points[i].*member = v[i];
+  } else if (c.type == Type::Float16) {
+    const auto v = c.as<uint16_t>();
+    for (size_t i = 0; i < points.size(); ++i) points[i].*member = halfToFloat(v[i]);
+  } else {
     throw Error(source, std::string("column '") + name + "' has type " + std::string(arrow::typeName(c.type)) +
                             ", expected float16 or float32");
   }
-  if (c.nullCount() > 0) throw Error(source, std::string("column '") + name + "' has null values");
-  const std::vector<double> d = c.toDouble();
-  return std::vector<float>(d.begin(), d.end());
 }
 
 int64_t timestampFromName(const std::filesystem::path& path) {
@@ -37,14 +43,17 @@ int64_t timestampFromName(const std::filesystem::path& path) {
 
 LidarSweep parseLidarSweep(std::span<const uint8_t> bytes, int64_t timestampNs, const std::string& source) {
   const arrow::Table t = arrow::parseFeather(bytes, source);
-  const std::vector<float> x = coordinate(t, "x", source), y = coordinate(t, "y", source),
-                           z = coordinate(t, "z", source);
   const auto intensity = t.column("intensity", Type::UInt8, source).as<uint8_t>();
   const auto laser = t.column("laser_number", Type::UInt8, source).as<uint8_t>();
   const auto offset = t.column("offset_ns", Type::Int32, source).as<int32_t>();
   LidarSweep sweep{timestampNs, std::vector<LidarPoint>(static_cast<size_t>(t.numRows))};
+  readCoordinate(t, "x", &LidarPoint::x, sweep.points, source);
+  readCoordinate(t, "y", &LidarPoint::y, sweep.points, source);
+  readCoordinate(t, "z", &LidarPoint::z, sweep.points, source);
   for (size_t i = 0; i < sweep.points.size(); ++i) {
-    sweep.points[i] = LidarPoint{x[i], y[i], z[i], intensity[i], laser[i], offset[i]};
+    sweep.points[i].intensity = intensity[i];
+    sweep.points[i].laserNumber = laser[i];
+    sweep.points[i].offsetNs = offset[i];
   }
   return sweep;
 }

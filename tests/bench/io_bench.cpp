@@ -4,6 +4,8 @@
 #include <filesystem>
 
 #include "engine/io/argoverse_log.h"
+#include "engine/io/feather.h"
+#include "engine/io/file_bytes.h"
 #include "engine/io/npy.h"
 #include "engine/io/vector_map.h"
 
@@ -48,6 +50,18 @@ void BM_ReadRealSweep(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 99229);
 }
 BENCHMARK(BM_ReadRealSweep)->Unit(benchmark::kMillisecond);
+
+void BM_ReadSweepFileBytes(benchmark::State& state) {
+  const fs::path path = kLog / "sensors" / "lidar" / "315966265259836000.feather";
+  for (auto _ : state) benchmark::DoNotOptimize(readFileBytes(path).size());
+}
+BENCHMARK(BM_ReadSweepFileBytes)->Unit(benchmark::kMillisecond);
+
+void BM_ParseSweepFeather(benchmark::State& state) {
+  const std::vector<uint8_t> bytes = readFileBytes(kLog / "sensors" / "lidar" / "315966265259836000.feather");
+  for (auto _ : state) benchmark::DoNotOptimize(arrow::parseFeather(bytes, "sweep").numRows);
+}
+BENCHMARK(BM_ParseSweepFeather)->Unit(benchmark::kMillisecond);
 
 void BM_ReadVectorMap(benchmark::State& state) {
   const ArgoverseLog log(kLog);
