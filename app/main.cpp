@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "engine/allocator_tuning.h"
 #include "engine/error.h"
 
 namespace {
@@ -29,6 +30,7 @@ void printUsage(std::FILE* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  hdprior::keepFreedMemoryMapped();
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     printUsage(argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;

@@ -3,6 +3,8 @@
 // the other layers for reference.
 #include <benchmark/benchmark.h>
 
+#include "engine/allocator_tuning.h"
+
 #include <filesystem>
 #include <random>
 
@@ -97,4 +99,11 @@ BENCHMARK(BM_ScoreNdt20000)
 }  // namespace
 }  // namespace hdprior
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  hdprior::keepFreedMemoryMapped();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
