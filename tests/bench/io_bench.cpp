@@ -1,8 +1,6 @@
 // Log I/O speed: opening a 1,000-sweep log, reading a real 100k-point sweep, parsing the map.
 #include <benchmark/benchmark.h>
 
-#include "engine/allocator_tuning.h"
-
 #include <filesystem>
 
 #include "engine/io/argoverse_log.h"
@@ -79,12 +77,3 @@ BENCHMARK(BM_ReadGroundHeightNpy)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace hdprior
-
-int main(int argc, char** argv) {
-  hdprior::keepFreedMemoryMapped();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

@@ -3,8 +3,6 @@
 // the other layers for reference.
 #include <benchmark/benchmark.h>
 
-#include "engine/allocator_tuning.h"
-
 #include <filesystem>
 #include <random>
 
@@ -98,12 +96,3 @@ BENCHMARK(BM_ScoreNdt20000)
 
 }  // namespace
 }  // namespace hdprior
-
-int main(int argc, char** argv) {
-  hdprior::keepFreedMemoryMapped();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
