@@ -8,5 +8,6 @@ namespace hdprior::app {
 // Bad input throws hdprior::Error, which main turns into one line and exit status 2.
 int runInfo(const std::vector<std::string>& args);
 int runExportMap(const std::vector<std::string>& args);
+int runSnapshot(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

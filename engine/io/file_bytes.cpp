@@ -49,7 +49,8 @@ void writeFileAtomically(const fs::path& path, std::span<const uint8_t> bytes) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) {
-    fs::remove(tmp, ec);
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
     throw Error(path.string(), "cannot rename temporary file into place: " + ec.message());
   }
 }

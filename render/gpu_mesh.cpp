@@ -1,0 +1,65 @@
+#include "render/gpu_mesh.h"
+
+#include <cstdint>
+
+#include "render/gl.h"
+
+namespace hdprior::render {
+namespace {
+
+GLenum glPrimitive(Primitive p) {
+  switch (p) {
+    case Primitive::Points: return GL_POINTS;
+    case Primitive::Lines: return GL_LINES;
+    case Primitive::LineStrip: return GL_LINE_STRIP;
+    case Primitive::LineLoop: return GL_LINE_LOOP;
+    case Primitive::Triangles: return GL_TRIANGLES;
+    case Primitive::TriangleFan: return GL_TRIANGLE_FAN;
+  }
+  return GL_POINTS;
+}
+
+void attribute(GLuint index, int components, size_t stride, size_t offset) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, GLsizei(stride),
+                        reinterpret_cast<const void*>(uintptr_t(offset)));
+}
+
+}  // namespace
+
+GpuMesh::GpuMesh() {
+  glGenVertexArrays(1, &vao_);
+  glGenBuffers(1, &vbo_);
+}
+
+GpuMesh::~GpuMesh() {
+  glDeleteBuffers(1, &vbo_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void GpuMesh::upload(std::span<const ColoredVertex> vertices) {
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size_bytes()), vertices.data(), GL_DYNAMIC_DRAW);
+  attribute(0, 3, sizeof(ColoredVertex), offsetof(ColoredVertex, position));
+  attribute(1, 4, sizeof(ColoredVertex), offsetof(ColoredVertex, color));
+  count_ = vertices.size();
+}
+
+void GpuMesh::upload(std::span<const TexturedVertex> vertices) {
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size_bytes()), vertices.data(), GL_DYNAMIC_DRAW);
+  attribute(0, 3, sizeof(TexturedVertex), offsetof(TexturedVertex, position));
+  attribute(1, 2, sizeof(TexturedVertex), offsetof(TexturedVertex, uv));
+  count_ = vertices.size();
+}
+
+void GpuMesh::draw(Primitive primitive, size_t first, size_t count) const {
+  if (count == 0) count = count_ - first;
+  if (first >= count_ || count == 0) return;
+  glBindVertexArray(vao_);
+  glDrawArrays(glPrimitive(primitive), GLint(first), GLsizei(count));
+}
+
+}  // namespace hdprior::render

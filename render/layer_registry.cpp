@@ -1,0 +1,75 @@
+#include "render/layer_registry.h"
+
+#include <algorithm>
+#include <functional>
+#include <utility>
+
+#include "engine/error.h"
+#include "render/layers/drivable_boundary_layer.h"
+#include "render/layers/drivable_raster_layer.h"
+#include "render/layers/ego_pose_layer.h"
+#include "render/layers/ground_height_layer.h"
+#include "render/layers/lane_centerline_layer.h"
+#include "render/layers/lidar_sweep_layer.h"
+#include "render/layers/trajectory_layer.h"
+
+namespace hdprior::render {
+namespace {
+
+using Factory = std::function<std::unique_ptr<Layer>()>;
+
+template <typename T>
+std::pair<std::string, Factory> entry() {
+  return {T::kName, [] { return std::make_unique<T>(); }};
+}
+
+// Drawing order: bottom first.
+const std::vector<std::pair<std::string, Factory>>& registry() {
+  static const std::vector<std::pair<std::string, Factory>> layers = {
+      entry<GroundHeightLayer>(),   entry<DrivableRasterLayer>(), entry<DrivableBoundaryLayer>(),
+      entry<LaneCenterlineLayer>(), entry<TrajectoryLayer>(),     entry<LidarSweepLayer>(),
+      entry<EgoPoseLayer>(),
+  };
+  return layers;
+}
+
+std::string joined() {
+  std::string s;
+  for (const auto& name : layerNames()) s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& layerNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [name, factory] : registry()) n.push_back(name);
+    return n;
+  }();
+  return names;
+}
+
+std::unique_ptr<Layer> makeLayer(const std::string& name) {
+  for (const auto& [n, factory] : registry())
+    if (n == name) return factory();
+  throw Error("layer " + name, "unknown layer (known: " + joined() + ")");
+}
+
+std::vector<std::string> parseLayerList(const std::string& list) {
+  if (list == "all") return layerNames();
+  std::vector<std::string> wanted;
+  for (size_t begin = 0, end = 0; end != std::string::npos; begin = end + 1) {
+    end = list.find(',', begin);
+    const std::string name = list.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    if (std::find(layerNames().begin(), layerNames().end(), name) == layerNames().end())
+      throw Error("layer '" + name + "'", "unknown layer (known: " + joined() + ")");
+    wanted.push_back(name);
+  }
+  std::vector<std::string> ordered;
+  for (const auto& name : layerNames())
+    if (std::find(wanted.begin(), wanted.end(), name) != wanted.end()) ordered.push_back(name);
+  return ordered;
+}
+
+}  // namespace hdprior::render

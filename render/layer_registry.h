@@ -1,0 +1,17 @@
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/layer.h"
+
+namespace hdprior::render {
+
+// All layer names, in drawing order (bottom first).
+const std::vector<std::string>& layerNames();
+// Throws Error("layer NAME", ...) for an unknown name.
+std::unique_ptr<Layer> makeLayer(const std::string& name);
+// Parses "a,b,c" (or "all"); unknown names throw; the result is in drawing order.
+std::vector<std::string> parseLayerList(const std::string& list);
+
+}  // namespace hdprior::render

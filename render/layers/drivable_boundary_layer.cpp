@@ -1,0 +1,29 @@
+#include "render/layers/drivable_boundary_layer.h"
+
+#include <cmath>
+#include <vector>
+
+#include "engine/map/hd_map.h"
+#include "render/layers/layer_drawing.h"
+#include "render/scene.h"
+
+namespace hdprior::render {
+
+void DrivableBoundaryLayer::setScene(const Scene& scene) {
+  const HdMap& map = *scene.map;
+  std::vector<ColoredVertex> vertices;
+  vertices.reserve(map.drivable().boundaryPoints().size());
+  for (const Eigen::Vector2d& p : map.drivable().boundaryPoints()) {
+    const double h = map.hasGroundHeight() ? map.groundHeight().bilinearAt(p) : NAN;
+    const double z = std::isfinite(h) ? h : scene.origin.z();
+    vertices.push_back({scene.local({p.x(), p.y(), z}), {1.0f, 0.72f, 0.10f, 1.0f}});
+  }
+  points_ = std::make_unique<GpuMesh>();
+  points_->upload(std::span<const ColoredVertex>(vertices));
+}
+
+void DrivableBoundaryLayer::draw(const DrawContext& context) const {
+  drawColored(context, *points_, Primitive::Points, 2.0f);
+}
+
+}  // namespace hdprior::render

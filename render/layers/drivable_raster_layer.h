@@ -1,0 +1,24 @@
+#pragma once
+#include <memory>
+
+#include "render/gpu_mesh.h"
+#include "render/gpu_texture.h"
+#include "render/layer.h"
+
+namespace hdprior::render {
+
+// The drivable raster as a translucent texture on a flat quad under the ego.
+class DrivableRasterLayer : public Layer {
+ public:
+  static constexpr const char* kName = "drivable";
+  std::string name() const override { return kName; }
+  void setScene(const Scene& scene) override;
+  void setFrame(const Scene& scene, const Frame& frame) override;
+  void draw(const DrawContext& context) const override;
+
+ private:
+  std::unique_ptr<GpuTexture> texture_;
+  std::unique_ptr<GpuMesh> quad_;
+};
+
+}  // namespace hdprior::render

@@ -1,0 +1,21 @@
+#pragma once
+#include <memory>
+
+#include "render/gpu_mesh.h"
+#include "render/layer.h"
+
+namespace hdprior::render {
+
+// The ego vehicle at its ground-truth pose: a translucent footprint with a heading arrow.
+class EgoPoseLayer : public Layer {
+ public:
+  static constexpr const char* kName = "ego";
+  std::string name() const override { return kName; }
+  void setFrame(const Scene& scene, const Frame& frame) override;
+  void draw(const DrawContext& context) const override;
+
+ private:
+  std::unique_ptr<GpuMesh> triangles_;
+};
+
+}  // namespace hdprior::render

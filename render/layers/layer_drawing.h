@@ -1,0 +1,23 @@
+#pragma once
+#include <array>
+
+#include <Eigen/Core>
+
+#include "render/gpu_mesh.h"
+#include "render/layer.h"
+
+namespace hdprior::render {
+
+class GpuTexture;
+
+// The two ways layers draw: per-vertex coloured points/lines/triangles, and a texture on a quad.
+void drawColored(const DrawContext& context, const GpuMesh& mesh, Primitive primitive, float pointSize = 1.0f,
+                 bool roundPoints = false);
+// The texture's colour is multiplied by `tint` (RGBA).
+void drawTextured(const DrawContext& context, const GpuMesh& quad, const GpuTexture& texture,
+                  const Eigen::Vector4f& tint);
+
+// A quad (two triangles) from four corners given counter-clockwise starting at uv (0, 0).
+std::array<TexturedVertex, 6> texturedQuad(const std::array<Eigen::Vector3f, 4>& corners);
+
+}  // namespace hdprior::render

@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "engine/geom/se3.h"
+
+namespace hdprior {
+class ArgoverseLog;
+class HdMap;
+struct LidarSweep;
+}  // namespace hdprior
+
+namespace hdprior::render {
+
+// What the layers draw from and does not change between frames. Everything is drawn in
+// the city frame shifted by `origin` (a point of the log), so float vertices keep
+// millimetres.
+struct Scene {
+  const ArgoverseLog* log = nullptr;
+  const HdMap* map = nullptr;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3f local(const Eigen::Vector3d& city) const { return (city - origin).cast<float>(); }
+};
+
+// The current frame: its sweep and ground-truth pose.
+struct Frame {
+  size_t index = 0;
+  int64_t timestampNs = 0;
+  SE3 cityTEgo = SE3::Identity();
+  std::shared_ptr<const LidarSweep> sweep;
+  double groundZ = 0.0;  // city height of the ground under the ego (its z where the map has none)
+};
+
+// The scene of a log and its map; origin at the first pose.
+Scene makeScene(const ArgoverseLog& log, const HdMap& map);
+// Loads frame `index` (its sweep, pose and ground height); throws Error when out of range.
+Frame makeFrame(const Scene& scene, size_t index);
+
+}  // namespace hdprior::render

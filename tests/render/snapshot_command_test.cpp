@@ -1,0 +1,90 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+#include "render/image_compare.h"
+#include "test_data.h"
+
+namespace hdprior::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& p) {
+  std::string s = "'";  // appended, not "'" + string: GCC 12 warns falsely (-Wrestrict) on that
+  s += p.string();
+  s += "'";
+  return s;
+}
+
+// The command draws the same picture as the library (it is the same renderer).
+TEST(SnapshotCommand, WritesThePngOfTheGolden) {
+  const fs::path dir = freshOutputDir("snapshot_command");
+  const fs::path out = dir / "frame0.png";
+  const CommandResult r =
+      runHdprior("snapshot " + quoted(sharedLog()) + " --frame 0 --size 640x360 --view top --out " + quoted(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = readPng(out);
+  EXPECT_EQ(image.width, 640);
+  EXPECT_EQ(image.height, 360);
+  EXPECT_EQ(checkGolden(image, "frame0_top_all"), "");
+}
+
+struct BadInput {
+  const char* name;
+  std::string args;  // after LOG; --out is added
+  const char* message;
+};
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class SnapshotCommandBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SnapshotCommandBadInput, FailsWithOneLineAndNoFile) {
+  const fs::path dir = freshOutputDir(std::string("snapshot_bad_") + GetParam().name);
+  const fs::path out = dir / "out.png";
+  const CommandResult r = runHdprior("snapshot " + quoted(sharedLog()) + " " + GetParam().args + " --out " + quoted(out));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir)) << "files left behind in " << dir;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, SnapshotCommandBadInput,
+    ::testing::Values(BadInput{"frame_out_of_range", "--frame 100000", "out of range"},
+                      BadInput{"negative_frame", "--frame -1", "negative"},
+                      BadInput{"missing_frame", "", "--frame"},
+                      BadInput{"bad_size", "--frame 0 --size 12xfoo", "--size"},
+                      BadInput{"zero_size", "--frame 0 --size 0x100", "--size"},
+                      BadInput{"unknown_layer", "--frame 0 --layers sweep,clouds", "unknown layer"},
+                      BadInput{"unknown_view", "--frame 0 --view side", "--view"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SnapshotCommand, UnwritableOutputFails) {
+  const CommandResult r = runHdprior("snapshot " + quoted(sharedLog()) + " --frame 0 --out /nonexistent/dir/x.png");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent/dir/x.png"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists("/nonexistent/dir/x.png"));
+}
+
+TEST(SnapshotCommand, OutputThatIsADirectoryFails) {
+  const fs::path dir = freshOutputDir("snapshot_out_is_dir");
+  const CommandResult r = runHdprior("snapshot " + quoted(sharedLog()) + " --frame 0 --out " + quoted(dir));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(SnapshotCommand, MissingLogFails) {
+  const fs::path dir = freshOutputDir("snapshot_missing_log");
+  const CommandResult r = runHdprior("snapshot " + quoted(dir / "no_such_log") + " --frame 0 --out " +
+                                     quoted(dir / "out.png"));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+}  // namespace
+}  // namespace hdprior::test
