@@ -1,0 +1,63 @@
+#pragma once
+// Point-to-line and point-to-plane residuals of scan-to-map registration, as templated functors
+// for Ceres automatic differentiation (they use Eigen only, so tests can evaluate them directly).
+//
+// The pose is a correction delta = [v (3), w (3)] applied on the right of a fixed base pose:
+// map_T_ego = base * (Exp(w), v), so the Jacobian and the covariance are in the ego (body) frame,
+// translation first.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace hdprior {
+
+template <typename T>
+Eigen::Matrix<T, 3, 1> rotateByVector(const T* w, const Eigen::Matrix<T, 3, 1>& p) {
+  const T theta2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const Eigen::Matrix<T, 3, 1> axisAngle(w[0], w[1], w[2]);
+  if (theta2 > T(1e-16)) {
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const T theta = sqrt(theta2);
+    const Eigen::Matrix<T, 3, 1> u = axisAngle / theta;
+    return p * cos(theta) + u.cross(p) * sin(theta) + u * (u.dot(p)) * (T(1) - cos(theta));
+  }
+  // First order near zero, exact in value and first derivative at w = 0.
+  return p + axisAngle.cross(p);
+}
+
+// The point p (ego frame) moved into the map frame by base * (Exp(w), v).
+template <typename T>
+Eigen::Matrix<T, 3, 1> correctedPoint(const T* delta, const Eigen::Vector3d& p, const Eigen::Isometry3d& base) {
+  const Eigen::Matrix<T, 3, 1> q = rotateByVector<T>(delta + 3, p.cast<T>().eval()) + Eigen::Matrix<T, 3, 1>(delta[0], delta[1], delta[2]);
+  return base.rotation().cast<T>() * q + base.translation().cast<T>();
+}
+
+// Distance vector from the moved point to the line through `a` with unit direction `u`.
+struct PointToLineResidual {
+  Eigen::Vector3d p, a, u;
+  Eigen::Isometry3d base;
+  template <typename T>
+  bool operator()(const T* delta, T* r) const {
+    const Eigen::Matrix<T, 3, 1> d = correctedPoint(delta, p, base) - a.cast<T>();
+    const Eigen::Matrix<T, 3, 1> perp = d - u.cast<T>() * u.cast<T>().dot(d);
+    r[0] = perp[0];
+    r[1] = perp[1];
+    r[2] = perp[2];
+    return true;
+  }
+};
+
+// Signed distance from the moved point to the plane n.x + d = 0 (n unit).
+struct PointToPlaneResidual {
+  Eigen::Vector3d p, n;
+  double d = 0;
+  Eigen::Isometry3d base;
+  template <typename T>
+  bool operator()(const T* delta, T* r) const {
+    r[0] = n.cast<T>().dot(correctedPoint(delta, p, base)) + T(d);
+    return true;
+  }
+};
+
+}  // namespace hdprior

@@ -1,0 +1,135 @@
+#include "engine/odom/odometry.h"
+
+#include <string>
+
+#include "engine/error.h"
+#include "engine/odom/deskew.h"
+#include "engine/odom/feature_registration.h"
+#include "engine/odom/ring_features.h"
+
+namespace hdprior {
+namespace {
+
+constexpr double kDefaultPeriodNs = 1e8;
+
+std::vector<Eigen::Vector3f> transformed(const std::vector<Eigen::Vector3f>& points, const SE3& T) {
+  const Eigen::Isometry3f Tf = T.cast<float>();
+  std::vector<Eigen::Vector3f> out(points.size());
+  for (size_t i = 0; i < points.size(); ++i) out[i] = Tf * points[i];
+  return out;
+}
+
+}  // namespace
+
+Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyframes)
+    : options_(options),
+      keyframeOptions_(keyframes),
+      edgeMap_(options.localMap),
+      planeMap_(options.localMap),
+      lastEdges_(options.localMap),
+      lastPlanes_(options.localMap) {
+  if (options_.deskew.mode != "none" && options_.deskew.mode != "constant_velocity") {
+    throw Error("odometry.deskew.mode", "must be \"none\" or \"constant_velocity\", not \"" + options_.deskew.mode + "\"");
+  }
+}
+
+// Motion over one sweep period from the last two estimates (constant velocity); identity at start.
+SE3 Odometry::predictedMotion(int64_t timestampNs, double& periodNs) const {
+  periodNs = frames_.empty() ? kDefaultPeriodNs : frames_.back().periodNs;
+  if (frames_.size() < 2) return SE3::Identity();
+  const OdometryFrame& a = frames_[frames_.size() - 2];
+  const OdometryFrame& b = frames_.back();
+  periodNs = double(b.timestampNs - a.timestampNs);
+  return a.odomTEgo.inverse() * b.odomTEgo;
+}
+
+std::vector<Eigen::Vector3f> Odometry::deskewed(const LidarSweep& sweep, size_t frame) const {
+  const OdometryFrame& f = frames_.at(frame);
+  if (options_.deskew.mode == "constant_velocity") return deskewSweep(sweep.points, f.sweepMotion, f.periodNs);
+  return sweepPositions(sweep.points);
+}
+
+const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
+  if (sweep.points.empty()) throw Error("sweep " + std::to_string(sweep.timestampNs), "has zero points");
+  if (!frames_.empty() && sweep.timestampNs <= frames_.back().timestampNs) {
+    throw Error("sweep " + std::to_string(sweep.timestampNs), "is not after the previous sweep");
+  }
+  const bool deskew = options_.deskew.mode == "constant_velocity";
+  const RegistrationOptions& ro = options_.registration;
+
+  OdometryFrame frame;
+  frame.timestampNs = sweep.timestampNs;
+  frame.sweepMotion = predictedMotion(sweep.timestampNs, frame.periodNs);
+  auto featuresFor = [&](const SE3& motion, std::vector<Eigen::Vector3f>& edges, std::vector<Eigen::Vector3f>& planes) {
+    const auto points = deskew ? deskewSweep(sweep.points, motion, frame.periodNs) : sweepPositions(sweep.points);
+    const FeatureCloud cloud = extractFeatures(points, sweep.points, options_.features);
+    edges = voxelDownsample(cloud.lessSharp, float(ro.edgeDownsample));
+    planes = voxelDownsample(cloud.lessFlat, float(ro.planeDownsample));
+  };
+  std::vector<Eigen::Vector3f> edges, planes;
+  featuresFor(frame.sweepMotion, edges, planes);
+
+  if (!frames_.empty()) {
+    const OdometryFrame& previous = frames_.back();
+    const double sinceLast = double(sweep.timestampNs - previous.timestampNs);
+    SE3 guess = previous.odomTEgo * scaleMotion(frame.sweepMotion, sinceLast / frame.periodNs);
+    if (ro.scanToScanGuess && !lastEdges_.empty()) {
+      guess = registerFeatures(edges, planes, lastEdges_, lastPlanes_, guess, ro).mapTEgo;
+    }
+    RegistrationResult r = registerFeatures(edges, planes, edgeMap_, planeMap_, guess, ro);
+    if (deskew) {
+      // Re-deskew with the estimated motion and refine once from the estimate.
+      frame.sweepMotion = scaleMotion(previous.odomTEgo.inverse() * r.mapTEgo, frame.periodNs / sinceLast);
+      featuresFor(frame.sweepMotion, edges, planes);
+      RegistrationOptions refine = ro;
+      refine.outerIterations = 1;
+      r = registerFeatures(edges, planes, edgeMap_, planeMap_, r.mapTEgo, refine);
+    }
+    frame.odomTEgo = r.mapTEgo;
+    frame.covariance = r.covariance;
+    frame.edgeResiduals = r.edgeResiduals;
+    frame.planeResiduals = r.planeResiduals;
+  }
+
+  const auto edgesInMap = transformed(edges, frame.odomTEgo), planesInMap = transformed(planes, frame.odomTEgo);
+  edgeMap_.add(edgesInMap);
+  planeMap_.add(planesInMap);
+  const Eigen::Vector3f centre = frame.odomTEgo.translation().cast<float>();
+  edgeMap_.removeFarFrom(centre);
+  planeMap_.removeFarFrom(centre);
+  if (ro.scanToScanGuess) {
+    lastEdges_ = VoxelFeatureMap(options_.localMap);
+    lastPlanes_ = VoxelFeatureMap(options_.localMap);
+    lastEdges_.add(edgesInMap);
+    lastPlanes_.add(planesInMap);
+  }
+  frames_.push_back(frame);
+  updateKeyframes();
+  return frames_.back();
+}
+
+void Odometry::updateKeyframes() {
+  const size_t index = frames_.size() - 1;
+  const OdometryFrame& f = frames_.back();
+  if (keyframes_.empty()) {
+    Keyframe k;
+    k.frame = index;
+    k.timestampNs = f.timestampNs;
+    k.odomTEgo = f.odomTEgo;
+    k.submapFrames = {index};
+    keyframes_.push_back(k);
+    return;
+  }
+  const Keyframe& last = keyframes_.back();
+  if (!isNewKeyframe(last.odomTEgo, f.odomTEgo, keyframeOptions_)) return;
+  Keyframe k;
+  k.frame = index;
+  k.timestampNs = f.timestampNs;
+  k.odomTEgo = f.odomTEgo;
+  k.previousTThis = last.odomTEgo.inverse() * f.odomTEgo;
+  k.relativeCovariance = relativeCovariance(k.previousTThis, frames_[last.frame].covariance, f.covariance);
+  for (size_t i = last.frame + 1; i <= index; ++i) k.submapFrames.push_back(i);
+  keyframes_.push_back(k);
+}
+
+}  // namespace hdprior

@@ -1,0 +1,53 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/geom/se3.h"
+#include "engine/io/lidar_sweep.h"
+#include "engine/odom/keyframe.h"
+#include "engine/odom/odometry_options.h"
+#include "engine/odom/voxel_feature_map.h"
+
+namespace hdprior {
+
+// The estimate for one sweep.
+struct OdometryFrame {
+  int64_t timestampNs = 0;
+  SE3 odomTEgo = SE3::Identity();        // the first sweep defines the odometry frame
+  SE3 sweepMotion = SE3::Identity();     // ego(t)_T_ego(t + period) used to deskew this sweep
+  double periodNs = 1e8;
+  Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  // scan-to-map, body [v, w]
+  int edgeResiduals = 0, planeResiduals = 0;
+};
+
+// LOAM-style lidar odometry: deskew, features per ring, scan-to-map registration against a bounded
+// local map, keyframes. Feed sweeps in time order.
+class Odometry {
+ public:
+  explicit Odometry(const OdometryOptions& options = {}, const KeyframeOptions& keyframes = {});
+
+  const OdometryFrame& registerSweep(const LidarSweep& sweep);
+
+  const std::vector<OdometryFrame>& frames() const { return frames_; }
+  const std::vector<Keyframe>& keyframes() const { return keyframes_; }
+  // The sweep's points in its ego frame at the sweep timestamp, deskewed as the estimate says.
+  std::vector<Eigen::Vector3f> deskewed(const LidarSweep& sweep, size_t frame) const;
+  size_t localMapPoints() const { return edgeMap_.pointCount() + planeMap_.pointCount(); }
+  size_t localMapVoxels() const { return edgeMap_.voxelCount() + planeMap_.voxelCount(); }
+
+ private:
+  SE3 predictedMotion(int64_t timestampNs, double& periodNs) const;
+  void updateKeyframes();
+
+  OdometryOptions options_;
+  KeyframeOptions keyframeOptions_;
+  VoxelFeatureMap edgeMap_, planeMap_;
+  VoxelFeatureMap lastEdges_, lastPlanes_;  // the previous scan, for the optional scan-to-scan guess
+  std::vector<OdometryFrame> frames_;
+  std::vector<Keyframe> keyframes_;
+};
+
+}  // namespace hdprior

@@ -1,0 +1,62 @@
+#pragma once
+#include <string>
+
+namespace hdprior {
+
+// LOAM feature extraction per ring (see ring_features.h). Curvature is the LOAM paper's
+// c = |sum_j (p_j - p_i)| / (2k |p_i|) over the k neighbours on each side along the ring.
+struct FeatureOptions {
+  int neighbours = 5;               // k
+  int sectors = 6;                  // per ring, each picks its own features
+  int sharpPerSector = 2;           // edges used as LOAM's "sharp" set
+  int lessSharpPerSector = 20;      // edges kept for the map ("less sharp")
+  int flatPerSector = 4;            // planes ("flat")
+  double edgeCurvature = 0.02;      // c above this may be an edge
+  double planeCurvature = 0.005;    // c below this may be a plane
+  double minRange = 2.0;            // metres; nearer returns hit the vehicle
+  double maxRange = 120.0;
+  double occlusionRatio = 0.1;      // neighbour range jump (relative) that marks the far side occluded
+  double parallelBeamRatio = 0.02;  // neighbour spacing / range above this on both sides: beam grazes surface
+  double maxGapDeg = 1.0;           // azimuth gap that breaks a ring into segments
+};
+
+// What the stored sweep points mean, and how to deskew them.
+// "none": points are already motion-compensated to the sweep timestamp (Argoverse 2, measured:
+// see README). "constant_velocity": points are in the ego frame at their own time
+// (sweep timestamp + offset_ns); they are moved to the sweep timestamp with the predicted motion and
+// re-deskewed with the estimated motion.
+struct DeskewOptions {
+  std::string mode = "none";
+};
+
+struct RegistrationOptions {
+  int outerIterations = 3;          // re-association rounds
+  int solverIterations = 6;         // Ceres iterations per round
+  double huberScale = 0.1;          // metres, robust loss
+  double maxCorrespondence = 1.0;   // metres, nearest-neighbour gate
+  double edgeDownsample = 0.3;      // voxel size for the scan's edge queries
+  double planeDownsample = 0.6;     // voxel size for the scan's plane queries
+  bool scanToScanGuess = false;     // seed with a scan-to-scan registration before scan-to-map
+};
+
+// The local map: features in a voxel hash, bounded by a radius around the vehicle and a point cap per voxel.
+struct LocalMapOptions {
+  double voxelSize = 1.0;
+  int maxPointsPerVoxel = 20;
+  double minPointSpacing = 0.1;     // a new point closer than this to one in its voxel is dropped
+  double radius = 100.0;            // voxels farther than this from the vehicle are removed
+};
+
+struct KeyframeOptions {
+  double distance = 2.0;            // metres travelled since the previous keyframe
+  double rotationDeg = 10.0;        // or degrees turned
+};
+
+struct OdometryOptions {
+  FeatureOptions features;
+  DeskewOptions deskew;
+  RegistrationOptions registration;
+  LocalMapOptions localMap;
+};
+
+}  // namespace hdprior

@@ -1,0 +1,36 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/io/lidar_sweep.h"
+#include "engine/odom/odometry_options.h"
+
+namespace hdprior {
+
+enum class FeatureLabel : uint8_t { None, Sharp, LessSharp, Flat, LessFlat };
+
+// The LOAM features of one sweep, in the sweep's ego frame. Sharp is a subset of lessSharp and
+// flat of lessFlat (LOAM's nesting). lessFlat holds every non-edge, non-rejected point.
+struct FeatureCloud {
+  std::vector<Eigen::Vector3f> sharp, lessSharp, flat, lessFlat;
+};
+
+// One ring's points in scan order, as the extractor sees them.
+struct RingPoint {
+  Eigen::Vector3f p;
+  float azimuth = 0;  // radians
+};
+
+// Labels each point of one ring (in scan order) by curvature, after rejecting points near occlusion
+// edges, points whose beam grazes the surface, out-of-range points and ring gaps; neighbours of a
+// picked feature are suppressed.
+std::vector<FeatureLabel> labelRing(const std::vector<RingPoint>& ring, const FeatureOptions& options);
+
+// Splits a sweep into rings by laser_number, orders each ring by offset_ns (scan order; on the real
+// Argoverse sweeps the file order within a ring is already monotone in offset_ns) and labels it.
+FeatureCloud extractFeatures(const std::vector<Eigen::Vector3f>& points, const std::vector<LidarPoint>& raw,
+                             const FeatureOptions& options);
+
+}  // namespace hdprior
