@@ -105,7 +105,7 @@ bool fitPlane(const Eigen::Vector3f* pts, int count, Eigen::Vector3d& normal, do
   for (int i = 0; i < count; ++i) {
     if (std::abs(normal.dot(pts[i].cast<double>()) + offset) > 0.2) return false;
   }
-  return values[0] < 0.1 * values[1];
+  return values[0] < 0.1 * values[1] && values[1] > 1e-3 * values[2];  // not a degenerate (collinear) patch
 }
 
 RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& edges, const std::vector<Eigen::Vector3f>& planes,

@@ -11,8 +11,8 @@ struct FeatureOptions {
   int sharpPerSector = 2;           // edges used as LOAM's "sharp" set
   int lessSharpPerSector = 20;      // edges kept for the map ("less sharp")
   int flatPerSector = 4;            // planes ("flat")
-  double edgeCurvature = 0.02;      // c above this may be an edge
-  double planeCurvature = 0.005;    // c below this may be a plane
+  double edgeCurvature = 0.005;     // c above this may be an edge (a 90 deg corner at 0.2 deg steps: ~0.01)
+  double planeCurvature = 0.0025;   // c below this may be a plane
   double minRange = 2.0;            // metres; nearer returns hit the vehicle
   double maxRange = 120.0;
   double occlusionRatio = 0.1;      // neighbour range jump (relative) that marks the far side occluded
