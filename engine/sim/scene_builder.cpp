@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "engine/error.h"
@@ -132,20 +133,40 @@ std::vector<Vec2> footprint(const Vec2& centre, const Vec2& axis, const Vec2& ha
   return out;
 }
 
-// Curb samples at least `spacing` apart, in the raster's boundary order.
-std::vector<Vec2> spacedCurbPoints(const DrivableRaster& raster, const Region& region, double spacing) {
-  std::unordered_set<int64_t> taken;
-  std::vector<Vec2> out;
-  const auto key = [&](int64_t cx, int64_t cy) { return (cx << 32) ^ int64_t(uint32_t(cy)); };
+// Outward unit normal of the drivable boundary at p (towards the sidewalk); zero if unknown.
+Vec2 curbNormal(const Scene& scene, const Vec2& p) {
+  const double e = 0.3;
+  const Vec2 g(scene.boundaryDistance(p + Vec2(e, 0)) - scene.boundaryDistance(p - Vec2(e, 0)),
+               scene.boundaryDistance(p + Vec2(0, e)) - scene.boundaryDistance(p - Vec2(0, e)));
+  return g.allFinite() && g.norm() > 1e-9 ? Vec2(g.normalized()) : Vec2(0, 0);
+}
+
+struct CurbPoint {
+  Vec2 p, n;  // on the curb; outward normal
+};
+
+// Curb samples at least `spacing` apart among those facing the same way (so both sides of
+// a narrow street get their own), in the raster's boundary order.
+std::vector<CurbPoint> spacedCurbPoints(const DrivableRaster& raster, const Scene& scene, const Region& region,
+                                        double spacing) {
+  std::unordered_map<int64_t, std::vector<size_t>> cells;
+  std::vector<CurbPoint> out;
+  const auto key = [](int64_t cx, int64_t cy) { return (cx << 32) ^ int64_t(uint32_t(cy)); };
   for (const Vec2& p : raster.boundaryPoints()) {
     if (!region.contains(p)) continue;
+    const Vec2 n = curbNormal(scene, p);
     const int64_t cx = int64_t(std::floor(p.x() / spacing)), cy = int64_t(std::floor(p.y() / spacing));
     bool near = false;
     for (int64_t dx = -1; dx <= 1 && !near; ++dx)
-      for (int64_t dy = -1; dy <= 1 && !near; ++dy) near = taken.count(key(cx + dx, cy + dy)) > 0;
+      for (int64_t dy = -1; dy <= 1 && !near; ++dy) {
+        const auto it = cells.find(key(cx + dx, cy + dy));
+        if (it == cells.end()) continue;
+        for (size_t i : it->second)
+          if ((out[i].p - p).norm() < spacing && out[i].n.dot(n) > 0.3) near = true;
+      }
     if (near) continue;
-    taken.insert(key(cx, cy));
-    out.push_back(p);
+    cells[key(cx, cy)].push_back(out.size());
+    out.push_back({p, n});
   }
   return out;
 }
@@ -165,13 +186,6 @@ struct Placer {
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
   bool chance(double p) { return uniform(0.0, 1.0) < p; }
 
-  // Outward unit normal of the drivable boundary at p (towards the sidewalk).
-  Vec2 normal(const Vec2& p) const {
-    const double e = 0.3;
-    const Vec2 g(scene.boundaryDistance(p + Vec2(e, 0)) - scene.boundaryDistance(p - Vec2(e, 0)),
-                 scene.boundaryDistance(p + Vec2(0, e)) - scene.boundaryDistance(p - Vec2(0, e)));
-    return g.allFinite() && g.norm() > 1e-9 ? Vec2(g.normalized()) : Vec2(0, 0);
-  }
   double minBoundary(const std::vector<Vec2>& pts) const {
     double m = std::numeric_limits<double>::infinity();
     for (const Vec2& p : pts) m = std::min(m, scene.boundaryDistance(p));
@@ -230,10 +244,9 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   Placer placer{scene, path, rng};
 
   // Parked cars: just inside the curb, along it, never near the drive.
-  for (const Vec2& p : spacedCurbPoints(raster, region, 6.5)) {
+  for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 6.5)) {
     const bool want = placer.chance(options.parked);
-    const Vec2 n = placer.normal(p);
-    if (!want || n.isZero()) continue;
+    if (!want) continue;
     const Vec2 axis(-n.y(), n.x()), half(2.3, 0.95);
     const Vec2 centre = p - n * 1.15;
     const auto fp = footprint(centre, axis, half, 0.8);
@@ -246,19 +259,16 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   }
 
   // Poles and trees on the sidewalk.
-  for (const Vec2& p : spacedCurbPoints(raster, region, options.poleSpacing)) {
-    const Vec2 n = placer.normal(p);
-    if (n.isZero()) continue;
+  for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, options.poleSpacing)) {
     const Vec2 c = p + n * 0.6;
     if (scene.boundaryDistance(c) < 0.3 || !placer.clearOfEgo({c}, 2.5) || !placer.occupancy.free({c})) continue;
     placer.occupancy.mark({c});
     const double z = scene.surfaceHeight(c);
     scene.addCylinder({c, 0.12, z - 0.2, z + placer.uniform(6.0, 9.0), 90});
   }
-  for (const Vec2& p : spacedCurbPoints(raster, region, 9.0)) {
+  for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 9.0)) {
     const bool want = placer.chance(options.treeDensity);
-    const Vec2 n = placer.normal(p);
-    if (!want || n.isZero()) continue;
+    if (!want) continue;
     const Vec2 c = p + n * placer.uniform(1.5, 2.5);
     const double crown = placer.uniform(1.2, 2.4);
     const auto fp = footprint(c, Vec2(1, 0), Vec2(crown, crown), 1.0);
@@ -271,10 +281,10 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   }
 
   // Buildings: facades parallel to the curb, behind the sidewalk at varying setbacks, with gaps.
-  for (const Vec2& p : spacedCurbPoints(raster, region, 14.0)) {
+  for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 14.0)) {
     const bool want = placer.chance(options.buildingDensity);
-    const Vec2 n = placer.normal(p);
-    if (!want || n.isZero()) continue;
+    if (!want) continue;
+
     const Vec2 axis(-n.y(), n.x());
     const Vec2 half(placer.uniform(5.0, 14.0), placer.uniform(4.0, 9.0));
     const double setback = options.sidewalkWidth - 0.5 + placer.uniform(0.0, 6.0);
