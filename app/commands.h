@@ -10,5 +10,6 @@ int runInfo(const std::vector<std::string>& args);
 int runExportMap(const std::vector<std::string>& args);
 int runSnapshot(const std::vector<std::string>& args);
 int runRun(const std::vector<std::string>& args);
+int runSim(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -20,6 +20,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"export-map", {hdprior::app::runExportMap, "write the HD-map rasters as GeoTIFFs: hdprior export-map LOG --out DIR"}},
       {"snapshot", {hdprior::app::runSnapshot, "draw a frame headless to PNG: hdprior snapshot LOG --frame N --out FILE.png"}},
       {"run", {hdprior::app::runRun, "lidar odometry + evaluation: hdprior run LOG --out DIR --no-prior [--config FILE]"}},
+      {"sim", {hdprior::app::runSim, "simulate an Argoverse 2 log: hdprior sim (--town SEED | --map LOG) --out DIR"}},
   };
   return table;
 }

@@ -1,0 +1,60 @@
+#include <cstdio>
+#include <string>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "engine/error.h"
+#include "engine/sim/log_writer.h"
+
+namespace hdprior::app {
+namespace {
+
+uint64_t seedOption(const CommandLine& cl, const std::string& name) {
+  const long long v = cl.integer(name, 0);
+  if (v < 0) throw Error("option --" + name, "must not be negative");
+  return uint64_t(v);
+}
+
+void drawProgress(size_t done, size_t total) {
+  const int width = 40;
+  const int filled = total ? int(width * done / total) : width;
+  std::fprintf(stderr, "\rsim [%s%s] %zu/%zu sweeps", std::string(size_t(filled), '#').c_str(),
+               std::string(size_t(width - filled), ' ').c_str(), done, total);
+  if (done == total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+int runSim(const std::vector<std::string>& args) {
+  const CommandLine cl(
+      args, {.valued = {"town", "map", "out", "seconds", "seed", "trajectory", "noise", "parked", "map-change",
+                        "threads", "dropout"},
+             .flags = {"quiet"}, .minPositional = 0, .maxPositional = 0,
+             .usage = "hdprior sim (--town SEED | --map LOG) --out DIR [--seconds N] [--seed S] "
+                      "[--trajectory real|route] [--noise M] [--parked P] [--map-change F] [--dropout D] "
+                      "[--threads T] [--quiet]"});
+  SimulationOptions o;
+  if (cl.has("town") == cl.has("map")) throw Error("option --town/--map", "give exactly one of --town SEED and --map LOG");
+  if (cl.has("town")) o.townSeed = seedOption(cl, "town");
+  else o.mapLog = cl.required("map");
+  o.outDir = cl.required("out");
+  o.seconds = cl.number("seconds", 0.0);
+  if (cl.has("seconds") && !(o.seconds > 0.0)) throw Error("option --seconds", "must be positive");
+  o.seed = seedOption(cl, "seed");
+  const std::string trajectory = cl.value("trajectory").value_or(cl.has("map") ? "real" : "route");
+  if (trajectory == "real") o.trajectory = SimTrajectory::Real;
+  else if (trajectory == "route") o.trajectory = SimTrajectory::Route;
+  else throw Error("option --trajectory", "'" + trajectory + "' is not real or route");
+  o.noise.rangeSigma = cl.number("noise", 0.02);
+  o.noise.dropout = cl.number("dropout", 0.02);
+  o.scene.parked = cl.number("parked", 0.5);
+  o.mapChange = cl.number("map-change", 0.0);
+  o.threads = int(cl.integer("threads", 2));
+  if (!cl.has("quiet")) o.progress = drawProgress;
+  const SimulationResult r = simulateLog(o);
+  std::printf("%s\n", r.logId.c_str());
+  return 0;
+}
+
+}  // namespace hdprior::app

@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/geom/se3.h"
+#include "engine/io/ego_poses.h"
+
+namespace hdprior {
+
+// One spinning 32-beam lidar of the stacked pair.
+struct LidarUnit {
+  std::string name;                 // up_lidar / down_lidar (the calibration's sensor_name)
+  SE3 egoTSensor = SE3::Identity();
+  std::vector<double> elevations;   // radians in the sensor frame, one per laser
+  int firstLaserNumber = 0;         // laser_number of elevations[0]
+  double startAzimuth = 0.0;        // sensor-frame azimuth (radians) of the first firing
+};
+
+// The sensor of an Argoverse 2 vehicle: two stacked 32-beam lidars spinning at 10 Hz in the
+// same direction (clockwise from above, decreasing azimuth), half a turn apart; the down one
+// mounted upside down. Firings are columns of all 32 lasers at once.
+struct LidarModel {
+  std::vector<LidarUnit> units;
+  int azimuthSteps = 1800;           // columns per revolution
+  int64_t periodNs = 100'000'000;    // one revolution = one sweep
+  double maxRange = 200.0;
+  double minRange = 1.0;
+
+  // Time of column `c` after the sweep timestamp.
+  int64_t columnOffsetNs(int c) const { return periodNs * c / azimuthSteps; }
+  size_t beamCount() const;
+  SensorCalibration calibration() const;  // sensor name -> ego_T_sensor
+};
+
+// 64 beams at the non-uniform elevations of a 32-beam automotive lidar (-25..+15 degrees,
+// dense near the horizon), placed like Argoverse 2's roof pair.
+LidarModel argoverseLikeLidar();
+
+}  // namespace hdprior
