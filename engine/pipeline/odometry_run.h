@@ -19,7 +19,7 @@ struct OdometryRun {
   std::unique_ptr<Odometry> odometry;
   SE3 cityTOdom = SE3::Identity();       // the first ground-truth pose
   PoseTrajectory estimate, groundTruth;  // city_T_ego at the sweep timestamps
-  std::vector<Eigen::Vector3f> mapPoints;  // voxelised global map, city frame
+  std::vector<Eigen::Vector3f> mapPoints;  // voxelised map of the keyframes' sweeps, city frame
   std::vector<float> mapIntensity;
   double wallSeconds = 0;
   size_t maxLocalMapPoints = 0;
