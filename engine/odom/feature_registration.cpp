@@ -7,6 +7,7 @@
 #include <ceres/ceres.h>
 
 #include "engine/odom/feature_residuals.h"
+#include "engine/odom/parallel_for.h"
 
 namespace hdprior {
 namespace {
@@ -37,30 +38,47 @@ SE3 applyDelta(const SE3& base, const double* delta) {
   return base * d;
 }
 
+// One query's association: a line (a, u) for an edge or a plane (n, d) for a plane point.
+struct Association {
+  bool valid = false;
+  Eigen::Vector3d a, u;
+  double d = 0;
+};
+
+std::vector<Association> associate(const std::vector<Eigen::Vector3f>& queries, const VoxelFeatureMap& map,
+                                   const SE3& base, bool edges, const RegistrationOptions& o) {
+  std::vector<Association> out(queries.size());
+  const Eigen::Isometry3f baseF = base.cast<float>();
+  const float gate = float(o.maxCorrespondence);
+  parallelFor(queries.size(), o.threads, [&](size_t begin, size_t end) {
+    Eigen::Vector3f nb[kNeighbours];
+    for (size_t i = begin; i < end; ++i) {
+      if (map.nearest(baseF * queries[i], kNeighbours, gate, nb) < kNeighbours) continue;
+      Association& a = out[i];
+      a.valid = edges ? fitLine(nb, kNeighbours, a.a, a.u) : fitPlane(nb, kNeighbours, a.u, a.d);
+    }
+  });
+  return out;
+}
+
 // Adds the residuals of one association round; returns (edges, planes) used.
 std::pair<int, int> addResiduals(ceres::Problem& problem, double* delta, const std::vector<Eigen::Vector3f>& edges,
                                  const std::vector<Eigen::Vector3f>& planes, const VoxelFeatureMap& edgeMap,
                                  const VoxelFeatureMap& planeMap, const SE3& base, const RegistrationOptions& o) {
-  const Eigen::Isometry3f baseF = base.cast<float>();
-  const float gate = float(o.maxCorrespondence);
-  Eigen::Vector3f nb[kNeighbours];
   int nEdges = 0, nPlanes = 0;
-  for (const auto& p : edges) {
-    if (edgeMap.nearest(baseF * p, kNeighbours, gate, nb) < kNeighbours) continue;
-    Eigen::Vector3d a, u;
-    if (!fitLine(nb, kNeighbours, a, u)) continue;
+  const auto lines = associate(edges, edgeMap, base, true, o);
+  for (size_t i = 0; i < edges.size(); ++i) {
+    if (!lines[i].valid) continue;
     auto* cost = new ceres::AutoDiffCostFunction<PointToLineResidual, 3, 6>(
-        new PointToLineResidual{p.cast<double>(), a, u, base});
+        new PointToLineResidual{edges[i].cast<double>(), lines[i].a, lines[i].u, base});
     problem.AddResidualBlock(cost, new ceres::HuberLoss(o.huberScale), delta);
     ++nEdges;
   }
-  for (const auto& p : planes) {
-    if (planeMap.nearest(baseF * p, kNeighbours, gate, nb) < kNeighbours) continue;
-    Eigen::Vector3d n;
-    double d;
-    if (!fitPlane(nb, kNeighbours, n, d)) continue;
+  const auto surfaces = associate(planes, planeMap, base, false, o);
+  for (size_t i = 0; i < planes.size(); ++i) {
+    if (!surfaces[i].valid) continue;
     auto* cost = new ceres::AutoDiffCostFunction<PointToPlaneResidual, 1, 6>(
-        new PointToPlaneResidual{p.cast<double>(), n, d, base});
+        new PointToPlaneResidual{planes[i].cast<double>(), surfaces[i].u, surfaces[i].d, base});
     problem.AddResidualBlock(cost, new ceres::HuberLoss(o.huberScale), delta);
     ++nPlanes;
   }

@@ -62,7 +62,7 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
   frame.sweepMotion = predictedMotion(sweep.timestampNs, frame.periodNs);
   auto featuresFor = [&](const SE3& motion, std::vector<Eigen::Vector3f>& edges, std::vector<Eigen::Vector3f>& planes) {
     const auto points = deskew ? deskewSweep(sweep.points, motion, frame.periodNs) : sweepPositions(sweep.points);
-    const FeatureCloud cloud = extractFeatures(points, sweep.points, options_.features);
+    const FeatureCloud cloud = extractFeatures(points, sweep.points, options_.features, ro.threads);
     edges = voxelDownsample(cloud.lessSharp, float(ro.edgeDownsample));
     planes = voxelDownsample(cloud.lessFlat, float(ro.planeDownsample));
   };

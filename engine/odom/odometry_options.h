@@ -37,6 +37,7 @@ struct RegistrationOptions {
   double edgeDownsample = 0.5;      // voxel size for the scan's edge queries
   double planeDownsample = 0.8;     // voxel size for the scan's plane queries
   bool scanToScanGuess = false;     // seed with a scan-to-scan registration before scan-to-map
+  int threads = 2;                  // correspondence search and feature extraction
 };
 
 // The local map: features in a voxel hash, bounded by a radius around the vehicle and a point cap per voxel.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "engine/odom/parallel_for.h"
+
 namespace hdprior {
 namespace {
 
@@ -114,26 +116,37 @@ std::vector<FeatureLabel> labelRing(const std::vector<RingPoint>& ring, const Fe
 }
 
 FeatureCloud extractFeatures(const std::vector<Eigen::Vector3f>& points, const std::vector<LidarPoint>& raw,
-                             const FeatureOptions& options) {
-  std::array<std::vector<uint32_t>, 256> rings;
-  for (uint32_t i = 0; i < raw.size(); ++i) rings[raw[i].laserNumber].push_back(i);
-  FeatureCloud cloud;
-  std::vector<RingPoint> ring;
-  for (auto& indices : rings) {
-    if (indices.empty()) continue;
-    std::stable_sort(indices.begin(), indices.end(), [&](uint32_t a, uint32_t b) { return raw[a].offsetNs < raw[b].offsetNs; });
-    ring.resize(indices.size());
-    for (size_t j = 0; j < indices.size(); ++j) {
-      const Eigen::Vector3f& p = points[indices[j]];
-      ring[j] = {p, std::atan2(p.y(), p.x())};
+                             const FeatureOptions& options, int threads) {
+  std::array<std::vector<uint32_t>, 256> byLaser;
+  for (uint32_t i = 0; i < raw.size(); ++i) byLaser[raw[i].laserNumber].push_back(i);
+  std::vector<std::vector<uint32_t>*> rings;
+  for (auto& indices : byLaser) {
+    if (!indices.empty()) rings.push_back(&indices);
+  }
+  std::vector<std::vector<RingPoint>> ringPoints(rings.size());
+  std::vector<std::vector<FeatureLabel>> labels(rings.size());
+  parallelFor(rings.size(), threads, [&](size_t begin, size_t end) {
+    for (size_t r = begin; r < end; ++r) {
+      auto& indices = *rings[r];
+      std::stable_sort(indices.begin(), indices.end(), [&](uint32_t a, uint32_t b) { return raw[a].offsetNs < raw[b].offsetNs; });
+      auto& ring = ringPoints[r];
+      ring.resize(indices.size());
+      for (size_t j = 0; j < indices.size(); ++j) {
+        const Eigen::Vector3f& p = points[indices[j]];
+        ring[j] = {p, std::atan2(p.y(), p.x())};
+      }
+      labels[r] = labelRing(ring, options);
     }
-    const std::vector<FeatureLabel> labels = labelRing(ring, options);
-    for (size_t j = 0; j < ring.size(); ++j) {
-      switch (labels[j]) {
-        case FeatureLabel::Sharp: cloud.sharp.push_back(ring[j].p); [[fallthrough]];
-        case FeatureLabel::LessSharp: cloud.lessSharp.push_back(ring[j].p); break;
-        case FeatureLabel::Flat: cloud.flat.push_back(ring[j].p); [[fallthrough]];
-        case FeatureLabel::LessFlat: cloud.lessFlat.push_back(ring[j].p); break;
+  }, 1);
+  FeatureCloud cloud;
+  for (size_t r = 0; r < rings.size(); ++r) {
+    for (size_t j = 0; j < ringPoints[r].size(); ++j) {
+      const Eigen::Vector3f& p = ringPoints[r][j].p;
+      switch (labels[r][j]) {
+        case FeatureLabel::Sharp: cloud.sharp.push_back(p); [[fallthrough]];
+        case FeatureLabel::LessSharp: cloud.lessSharp.push_back(p); break;
+        case FeatureLabel::Flat: cloud.flat.push_back(p); [[fallthrough]];
+        case FeatureLabel::LessFlat: cloud.lessFlat.push_back(p); break;
         case FeatureLabel::None: break;
       }
     }

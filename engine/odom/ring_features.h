@@ -31,6 +31,6 @@ std::vector<FeatureLabel> labelRing(const std::vector<RingPoint>& ring, const Fe
 // Splits a sweep into rings by laser_number, orders each ring by offset_ns (scan order; on the real
 // Argoverse sweeps the file order within a ring is already monotone in offset_ns) and labels it.
 FeatureCloud extractFeatures(const std::vector<Eigen::Vector3f>& points, const std::vector<LidarPoint>& raw,
-                             const FeatureOptions& options);
+                             const FeatureOptions& options, int threads = 1);
 
 }  // namespace hdprior
