@@ -36,15 +36,19 @@ void BM_OdometrySimulatedDrive(benchmark::State& state) {
   const auto& sweeps = simulatedSweeps();
   size_t points = 0;
   for (const auto& s : sweeps) points += s->points.size();
+  OdometryOptions options;
+  options.registration.threads = int(state.range(0));
   for (auto _ : state) {
-    Odometry odometry;
+    Odometry odometry(options);
     for (const auto& s : sweeps) benchmark::DoNotOptimize(odometry.registerSweep(*s));
   }
   state.SetItemsProcessed(int64_t(state.iterations() * sweeps.size()));
   state.counters["points_per_sweep"] = double(points) / double(sweeps.size());
   state.counters["sweeps"] = double(sweeps.size());
 }
-BENCHMARK(BM_OdometrySimulatedDrive)->Unit(benchmark::kMillisecond)->Iterations(2);
+// Rates are per wall-clock second (UseRealTime); the CPU column is the whole process (both threads).
+BENCHMARK(BM_OdometrySimulatedDrive)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(2)
+    ->UseRealTime()->MeasureProcessCPUTime();
 
 // The two real Argoverse 2 sweeps (99k points each), fed alternately with advancing timestamps:
 // every call after the first runs the full pipeline against a populated local map.
@@ -64,6 +68,6 @@ void BM_OdometryRealSweeps(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_OdometryRealSweeps)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OdometryRealSweeps)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 }  // namespace
