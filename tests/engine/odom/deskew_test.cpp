@@ -25,7 +25,8 @@ TEST(Deskew, MovesPointsByTheFractionOfTheSweepMotion) {
 }
 
 // The stored real points are already compensated to the sweep timestamp (the Argoverse 2
-// convention): deskewing them again (constant_velocity) must not do better than "none".
+// convention): deskewing them again (constant_velocity) distorts sweep 1 against sweep 0 and must
+// register worse than "none". Measured: 0.0058 m / 0.024 deg (none) vs 0.054 m / 0.216 deg.
 TEST(Deskew, RealSweepsAgreeWithTheCompensatedConvention) {
   const ArgoverseLog log(test::sharedLog());
   const SE3 gt = log.cityTEgo().at(log.sweepTimestamps()[0]).inverse() * log.cityTEgo().at(log.sweepTimestamps()[1]);
@@ -41,7 +42,7 @@ TEST(Deskew, RealSweepsAgreeWithTheCompensatedConvention) {
                 Eigen::AngleAxisd(e.rotation()).angle() * 180 / M_PI);
   }
   EXPECT_LT(error[0], 0.05);
-  EXPECT_LT(error[1], 0.05);
+  EXPECT_LT(error[0], error[1]);
 }
 
 TEST(Keyframes, DistanceAndRotationThresholds) {
