@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <unordered_map>
 #include <vector>
 
 #include "engine/io/argoverse_log.h"
+#include "sweep_agreement.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -17,39 +17,6 @@ namespace {
 
 double azimuthDeg(const LidarPoint& p, const Eigen::Vector3d& sensor) {
   return std::atan2(double(p.y) - sensor.y(), double(p.x) - sensor.x()) * 180.0 / std::numbers::pi;
-}
-
-// Median over points of sweep `b` of the distance to the nearest point of sweep `a` (up to
-// 1 m, voxel hash of 0.25 m), both placed in the city frame by `place`.
-template <class Place>
-double medianNearest(const LidarSweep& a, const LidarSweep& b, Place place) {
-  const double cell = 0.25;
-  const auto key = [&](const Eigen::Vector3d& p, int dx, int dy, int dz) {
-    const int64_t x = int64_t(std::floor(p.x() / cell)) + dx, y = int64_t(std::floor(p.y() / cell)) + dy,
-                  z = int64_t(std::floor(p.z() / cell)) + dz;
-    return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791);
-  };
-  std::unordered_map<int64_t, std::vector<Eigen::Vector3d>> grid;
-  for (const LidarPoint& p : a.points) {
-    const Eigen::Vector3d q = place(a, p);
-    grid[key(q, 0, 0, 0)].push_back(q);
-  }
-  std::vector<double> d;
-  for (const LidarPoint& p : b.points) {
-    const Eigen::Vector3d q = place(b, p);
-    if (std::hypot(double(p.x), double(p.y)) < 5.0) continue;  // skip the vehicle's own surroundings
-    double best = 1.0;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find(key(q, dx, dy, dz));
-          if (it == grid.end()) continue;
-          for (const Eigen::Vector3d& r : it->second) best = std::min(best, (r - q).norm());
-        }
-    d.push_back(best);
-  }
-  std::nth_element(d.begin(), d.begin() + long(d.size() / 2), d.end());
-  return d[d.size() / 2];
 }
 
 TEST(ArgoverseConvention, OffsetsRunFromTheSweepTimestampOverOnePeriod) {
@@ -113,17 +80,8 @@ TEST(ArgoverseConvention, SweepsAreMotionCompensatedToTheSweepTimestamp) {
   const PoseTrajectory& T = log.cityTEgo();
   const double speed = (T.at(b->timestampNs).translation() - T.at(a->timestampNs).translation()).norm() /
                        (double(b->timestampNs - a->timestampNs) * 1e-9);
-  const auto compensated = [&](const LidarSweep& s, const LidarPoint& p) {
-    return Eigen::Vector3d(T.at(s.timestampNs) * Eigen::Vector3d(p.x, p.y, p.z));
-  };
-  std::unordered_map<int64_t, SE3> cache;
-  const auto raw = [&](const LidarSweep& s, const LidarPoint& p) {
-    const int64_t t = s.timestampNs + p.offsetNs / 1'000'000 * 1'000'000;  // 1 ms steps
-    auto it = cache.find(t);
-    if (it == cache.end()) it = cache.emplace(t, T.at(t)).first;
-    return Eigen::Vector3d(it->second * Eigen::Vector3d(p.x, p.y, p.z));
-  };
-  const double dCompensated = medianNearest(*a, *b, compensated), dRaw = medianNearest(*a, *b, raw);
+  const double dCompensated = test::medianNearest(T, *a, *b, test::Placement::AtSweepTimestamp);
+  const double dRaw = test::medianNearest(T, *a, *b, test::Placement::AtReturnTime);
   std::printf("[ info ] ego speed %.2f m/s; median nearest distance between the sweeps: compensated %.4f m, raw %.4f m\n",
               speed, dCompensated, dRaw);
   EXPECT_LT(dCompensated, dRaw);

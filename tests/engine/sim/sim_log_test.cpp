@@ -132,8 +132,22 @@ TEST(SimLog, TownRouteReadsBackWithGroundTruthRoadPoints) {
   const SimulationResult r = simulateLog(o);
   checkLayout(r.dir, 5);
   checkRoadPoints(r.dir, 5);
-  // Route drive: z is the ground height plus the ego origin's 0.32 m.
   const ArgoverseLog log(r.dir);
+  // Both lidars turn clockwise from the measured Argoverse start azimuths (140 and -40 deg).
+  const auto sweep = log.sweep(0);
+  for (int unit = 0; unit < 2; ++unit) {
+    const Eigen::Vector3d sensor = log.calibration().at(unit == 0 ? "up_lidar" : "down_lidar").translation();
+    Eigen::Vector2d first = Eigen::Vector2d::Zero(), last = Eigen::Vector2d::Zero();
+    for (const LidarPoint& p : sweep->points) {
+      if ((p.laserNumber >= 32) != (unit == 1) || p.offsetNs > 2'000'000 && p.offsetNs < 98'000'000) continue;
+      const double a = std::atan2(p.y - sensor.y(), p.x - sensor.x());
+      (p.offsetNs <= 2'000'000 ? first : last) += Eigen::Vector2d(std::cos(a), std::sin(a));
+    }
+    const double a0 = std::atan2(first.y(), first.x()) * 180 / M_PI, a1 = std::atan2(last.y(), last.x()) * 180 / M_PI;
+    EXPECT_NEAR(std::remainder(a0 - (unit == 0 ? 136.4 : -43.6), 360.0), 0.0, 3.0) << "unit " << unit;
+    EXPECT_NEAR(std::remainder(a1 - a0, 360.0), 7.2, 3.0) << "unit " << unit;  // clockwise: -352.8 = +7.2
+  }
+  // Route drive: z is the ground height plus the ego origin's 0.32 m.
   const GroundHeight ground = readGroundHeight(log.mapFiles().groundHeight, log.mapFiles().sim2);
   for (size_t i = 0; i < log.cityTEgo().size(); i += 10) {
     const Eigen::Vector3d p = log.cityTEgo().poses()[i].translation();
