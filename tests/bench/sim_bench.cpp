@@ -64,7 +64,8 @@ void BM_SimulateOneSweep(benchmark::State& state) {
   size_t points = 0;
   int64_t k = 0;
   for (auto _ : state) {
-    const SimulatedSweep s = simulateSweep(f.scene, f.lidar, f.route, f.route.startNs() + (k++ % 150) * 100'000'000,
+    ++k;
+    const SimulatedSweep s = simulateSweep(f.scene, f.lidar, f.route, f.route.startNs() + (k % 150) * 100'000'000,
                                            SweepNoise{}, uint64_t(k));
     points = s.sweep.points.size();
   }
