@@ -7,7 +7,7 @@
 namespace hdprior {
 
 // A smooth synthetic terrain: a sum of low-frequency plane waves and Gaussian bumps, scaled
-// so that its slope never exceeds a given grade anywhere (the bound is analytic).
+// so that its steepest slope over the town is a given grade.
 struct HeightField {
   struct Wave {
     Eigen::Vector2d k = Eigen::Vector2d::Zero();  // radians per metre
@@ -26,7 +26,9 @@ struct HeightField {
   // sum |A k| + sum |A| / (sigma sqrt(e)): no point has a larger slope.
   double slopeBound() const;
 
-  // Random hills over the box [min, max], scaled to slopeBound() == maxGrade.
+  // The steepest slope at samples `step` apart over the box [min, max].
+  double maxSampledSlope(const Eigen::Vector2d& min, const Eigen::Vector2d& max, double step) const;
+  // Random hills over the box [min, max], scaled so that maxSampledSlope(min, max, 5) == maxGrade.
   static HeightField random(const Eigen::Vector2d& min, const Eigen::Vector2d& max, double maxGrade,
                             std::mt19937_64& rng);
 };

@@ -42,14 +42,16 @@ LidarModel argoverseLikeLidar() {
   up.egoTSensor = makeSE3(Eigen::Quaterniond::Identity(), Eigen::Vector3d(1.35, 0.0, 1.64));
   up.elevations = elevationTableRadians();
   up.firstLaserNumber = 0;
-  up.startAzimuth = std::numbers::pi;  // starts facing backwards
+  // Ego-frame azimuths at offset_ns = 0 as measured on real Argoverse 2 sweeps
+  // (tests/engine/sim/argoverse_convention_test.cpp): about 140 and -40 degrees.
+  up.startAzimuth = 140.0 * std::numbers::pi / 180.0;
   LidarUnit down = up;
   down.name = "down_lidar";
   // Upside down (180 degrees about x), just below the up lidar.
   down.egoTSensor = makeSE3(Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX())),
-                            Eigen::Vector3d(1.35, 0.0, 1.50));
+                            Eigen::Vector3d(1.35, 0.0, 1.52));
   down.firstLaserNumber = 32;
-  down.startAzimuth = 0.0;  // half a turn from the up lidar
+  down.startAzimuth = -40.0 * std::numbers::pi / 180.0;  // half a turn from the up lidar
   m.units = {up, down};
   return m;
 }

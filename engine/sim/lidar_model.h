@@ -14,7 +14,7 @@ struct LidarUnit {
   SE3 egoTSensor = SE3::Identity();
   std::vector<double> elevations;   // radians in the sensor frame, one per laser
   int firstLaserNumber = 0;         // laser_number of elevations[0]
-  double startAzimuth = 0.0;        // sensor-frame azimuth (radians) of the first firing
+  double startAzimuth = 0.0;        // ego-frame azimuth (radians) of the first firing
 };
 
 // The sensor of an Argoverse 2 vehicle: two stacked 32-beam lidars spinning at 10 Hz in the

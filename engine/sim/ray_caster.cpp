@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace hdprior {
 namespace {
@@ -10,8 +11,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Slab test against a box in its own frame; updates best (range) and hit.
-void hitBox(const SceneBox& b, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double& best, RayHit& hit) {
-  const double c = std::cos(b.yaw), s = std::sin(b.yaw);
+void hitBox(const SceneBox& b, const Eigen::Vector2d& yawAxis, const Eigen::Vector3d& o, const Eigen::Vector3d& d,
+            double& best, RayHit& hit) {
+  const double c = yawAxis.x(), s = yawAxis.y();
   const Eigen::Vector2d rel = o.head<2>() - b.centre;
   const double lo[3] = {c * rel.x() + s * rel.y(), -s * rel.x() + c * rel.y(), o.z()};
   const double ld[3] = {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), d.z()};
@@ -78,7 +80,7 @@ std::optional<RayHit> castRayObjects(const Scene& scene, std::span<const SceneBo
   bool found = false;
   for (const SceneBox& b : moving) {
     const double before = best;
-    hitBox(b, origin, dir, best, hit);
+    hitBox(b, Eigen::Vector2d(std::cos(b.yaw), std::sin(b.yaw)), origin, dir, best, hit);
     found |= best < before;
   }
   const GridGeometry& g = scene.objectGrid();
@@ -126,12 +128,13 @@ std::optional<RayHit> castRayObjects(const Scene& scene, std::span<const SceneBo
                       ? tEnter + ((stepR > 0 ? row + 1 - pe.y() : pe.y() - row) * invY)
                       : kInf;
   const auto& boxes = scene.boxes();
+  if (scene.boxAxes().size() != boxes.size()) throw std::logic_error("Scene::index() was not called");
   const auto& cylinders = scene.cylinders();
   while (true) {
     for (const uint32_t item : scene.cellItems(col, row)) {
       const double before = best;
       if (item & Scene::kCylinderBit) hitCylinder(cylinders[item & ~Scene::kCylinderBit], origin, dir, best, hit);
-      else hitBox(boxes[item], origin, dir, best, hit);
+      else hitBox(boxes[item], scene.boxAxes()[item], origin, dir, best, hit);
       found |= best < before;
     }
     const double tNext = std::min(tNextX, tNextY);

@@ -95,6 +95,8 @@ std::vector<SceneBox> Scene::movingBoxesAt(int64_t tNs, const Eigen::Vector2d& e
 }
 
 void Scene::index(double cellSize) {
+  boxAxes_.clear();
+  for (const SceneBox& b : boxes_) boxAxes_.emplace_back(std::cos(b.yaw), std::sin(b.yaw));
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> extents;  // per item, boxes first
   for (const SceneBox& b : boxes_) {

@@ -69,6 +69,8 @@ class Scene {
   void addCylinder(const SceneCylinder& c) { cylinders_.push_back(c); }
   void addMovingCar(MovingCar car) { movingCars_.push_back(std::move(car)); }
   const std::vector<SceneBox>& boxes() const { return boxes_; }
+  // cos and sin of each box's yaw (filled by index()).
+  const std::vector<Eigen::Vector2d>& boxAxes() const { return boxAxes_; }
   const std::vector<SceneCylinder>& cylinders() const { return cylinders_; }
   const std::vector<MovingCar>& movingCars() const { return movingCars_; }
   // The moving cars at tNs within `radius` of `egoXY`, leaving out any closer than
@@ -94,6 +96,7 @@ class Scene {
   double maxSlope_ = 0.1;
   double curbPhase_[2] = {0.0, 0.0};
   std::vector<SceneBox> boxes_;
+  std::vector<Eigen::Vector2d> boxAxes_;
   std::vector<SceneCylinder> cylinders_;
   std::vector<MovingCar> movingCars_;
   GridGeometry objectGrid_;

@@ -243,14 +243,30 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
     if (path.empty() || (p - path.back()).norm() > 2.0) path.push_back(p);
   Placer placer{scene, path, rng};
 
-  // Parked cars: just inside the curb, along it, never near the drive.
+  // Junctions (intersection lanes, 4 m cells): no parking there.
+  std::unordered_set<int64_t> junction;
+  const auto cellKey = [](const Vec2& p, int dx, int dy) {
+    return (int64_t(std::floor(p.x() / 4.0) + dx) << 32) ^ int64_t(uint32_t(int32_t(std::floor(p.y() / 4.0) + dy)));
+  };
+  for (const Lane& lane : lanes.lanes())
+    if (lane.isIntersection)
+      for (const Eigen::Vector3d& q : lane.centerline)
+        if (region.contains(q.head<2>())) junction.insert(cellKey(q.head<2>(), 0, 0));
+  const auto nearJunction = [&](const Vec2& p) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        if (junction.count(cellKey(p, dx, dy))) return true;
+    return false;
+  };
+
+  // Parked cars: just inside the curb, along it, never near the drive nor in junctions.
   for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 6.5)) {
     const bool want = placer.chance(options.parked);
     if (!want) continue;
     const Vec2 axis(-n.y(), n.x()), half(2.3, 0.95);
     const Vec2 centre = p - n * 1.15;
     const auto fp = footprint(centre, axis, half, 0.8);
-    if (placer.maxBoundary(fp) > -0.05 || !placer.clearOfEgo(fp, 2.5) || !placer.occupancy.free(fp)) continue;
+    if (nearJunction(centre) || placer.maxBoundary(fp) > -0.05 || !placer.clearOfEgo(fp, 2.5) || !placer.occupancy.free(fp)) continue;
     placer.occupancy.mark(fp);
     const double z = placer.minGround(fp);
     const double height = placer.uniform(1.4, 1.9);

@@ -17,7 +17,7 @@ SimulatedSweep simulateSweep(const Scene& scene, const LidarModel& lidar, const 
   const SE3 egoAtSweepTCity = cityTEgo.at(sweepNs).inverse();
   const SE3 mid = cityTEgo.at(sweepNs + lidar.periodNs / 2);
   const std::vector<SceneBox> moving =
-      scene.movingBoxesAt(sweepNs + lidar.periodNs / 2, mid.translation().head<2>(), lidar.maxRange, 6.0);
+      scene.movingBoxesAt(sweepNs + lidar.periodNs / 2, mid.translation().head<2>(), lidar.maxRange, 10.0);
 
   // Sensor-frame unit directions per unit, column-independent parts.
   SimulatedSweep out;

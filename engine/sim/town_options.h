@@ -15,7 +15,7 @@ struct TownOptions {
   double twoLaneWidth = 11.0;         // from this road width on, two lanes per direction
   int corridors = 2;                  // long loops without junctions on the east and north sides
   double corridorLength = 420.0;      // metres from the grid to the far side of a corridor loop
-  double hillGrade = 0.075;           // bound of the height field's slope (grade <= 8 %)
+  double hillGrade = 0.08;            // steepest grade of the terrain anywhere in the town
   double groundResolution = 0.3;      // metres per ground-height pixel
   double groundRadius = 5.0;          // ground height is given within this distance of the road
 };

@@ -65,9 +65,12 @@ PoseTrajectory routeTrajectory(const LaneGraph& lanes, const GroundHeight& groun
   for (int attempt = 0; attempt < 50 && (st.empty() || st.back().s < needed); ++attempt) {
     const size_t start = starts[std::uniform_int_distribution<size_t>(0, starts.size() - 1)(rng)];
     st = routeStations(lanes, lanes.randomRoute(start, needed, rng));
+    // A real map's ground height ends a few metres beyond its drivable area: cut the route there.
+    const auto off = std::find_if(st.begin(), st.end(), [&](const Station& x) { return std::isnan(ground.bilinearAt(x.xy)); });
+    st.erase(off, st.end());
   }
-  if (st.empty() || st.back().s < needed)
-    throw Error("lane graph", "no route of " + std::to_string(int(needed)) + " m along the lanes");
+  if (st.size() < 2 || st.back().s < needed)
+    throw Error("lane graph", "no route of " + std::to_string(int(needed)) + " m along the lanes (within the ground height)");
 
   // Speed limits from curvature, stops, then acceleration-limited forward/backward passes.
   std::bernoulli_distribution stopHere(o.stopProbability);
