@@ -13,7 +13,7 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0)) {
+  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0)) {
     throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap or seed settings out of range");
   }
 }
@@ -60,27 +60,39 @@ class RingWalk {
            std::abs(p.z() - o_.groundZ) < o_.seedTolerance + o_.seedTolerancePerMetre * p.head<2>().norm();
   }
 
-  // Steps to the next ground point while its height agrees with every road point of this
-  // walk within `window` metres behind it (so a curb climbed through its face points, in
-  // steps each below maxStep, still stops the walk).
+  // Steps along the ring while each ground point's height agrees with every road point of
+  // this walk within `window` metres behind it (so a curb climbed through its face points,
+  // in steps each below maxStep, still ends the walk); up to maxSkipped consecutive points
+  // that disagree (noise) are skipped before the walk ends.
   void walkFrom(size_t start, int direction, std::vector<uint8_t>& road) {
     const size_t n = members_.size();
     std::vector<size_t> path = {start};
+    int failures = 0;
+    size_t k = start;
     for (size_t steps = 1; steps < n; ++steps) {
-      const size_t next = (path.back() + n + size_t(direction)) % n;
-      if (visited_[next]) return;
-      const Eigen::Vector3d& b = points_[members_[next]];
+      k = (k + n + size_t(direction)) % n;
+      if (visited_[k]) return;
+      const Eigen::Vector3d& b = points_[members_[k]];
       if ((b.head<2>() - points_[members_[path.back()]].head<2>()).norm() > o_.maxGap) return;
-      for (auto it = path.rbegin(); it != path.rend(); ++it) {
-        const Eigen::Vector3d& a = points_[members_[*it]];
-        const double distance = (b.head<2>() - a.head<2>()).norm();
-        if (it != path.rbegin() && distance > o_.window) break;
-        if (std::abs(b.z() - a.z()) > o_.maxStep + o_.stepPerMetre * distance) return;
+      if (!agrees(b, path)) {
+        if (++failures > o_.maxSkipped) return;
+        continue;
       }
-      visited_[next] = 1;
-      road[members_[next]] = 1;
-      path.push_back(next);
+      failures = 0;
+      visited_[k] = 1;
+      road[members_[k]] = 1;
+      path.push_back(k);
     }
+  }
+
+  bool agrees(const Eigen::Vector3d& b, const std::vector<size_t>& path) const {
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      const Eigen::Vector3d& a = points_[members_[*it]];
+      const double distance = (b.head<2>() - a.head<2>()).norm();
+      if (it != path.rbegin() && distance > o_.window) break;
+      if (std::abs(b.z() - a.z()) > o_.maxStep + o_.stepPerMetre * distance) return false;
+    }
+    return true;
   }
 
   std::span<const Eigen::Vector3d> points_;

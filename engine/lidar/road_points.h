@@ -10,17 +10,18 @@ namespace hdprior {
 // Road-point extraction: of the ground points, the road surface the vehicle drives on,
 // separated from sidewalks and verges at the curbs. Each laser ring is walked along its
 // azimuth, over ground points only, from seeds ahead of and behind the vehicle in its lane
-// at road level, outwards in both directions; the walk stops where the height jumps by more
-// than a step between a ground point and the road points just before it (a curb: about 0.15 m) or the gap along
+// at road level, outwards in both directions; the walk stops where the height differs by more
+// than a step from any road point of the walk just before it (a curb: about 0.15 m) or the gap along
 // the ring grows too long. Non-ground returns (cars, pedestrians) are stepped over, so the
 // walk continues on the road behind an occluder but not onto a raised sidewalk.
 struct RoadPointOptions {
   double groundZ = -0.32;          // road level under the ego origin
   double maxRange = 40.0;          // metres from the origin
-  double maxStep = 0.06;           // height change allowed between consecutive ground points ...
+  double maxStep = 0.05;           // height change allowed between consecutive ground points ...
   double stepPerMetre = 0.01;      // ... plus this much per metre between them
   double maxGap = 5.0;             // a longer gap along the ring ends the walk, metres
   double window = 3.0;             // the step test covers the walk's road points this far back
+  int maxSkipped = 3;              // this many consecutive points off the road height end the walk
   double seedHalfWidth = 1.5;      // seeds: ground points within this of the vehicle's x axis ...
   double seedTolerance = 0.12;     // ... within this of groundZ ...
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
