@@ -20,6 +20,7 @@ struct MatchOptions {
   double outlierRatio = 0.55;
   NdtLookup lookup = NdtLookup::FourNearest;
   int maxIterations = 25;               // Newton iterations per level
+  int maxCoarseStride = 1;              // coarse levels may use every (size / finest)^2-th point, at most this (1: all; larger measured less robust)
   double maxStepCells = 0.5;            // a step moves at most this many cells ...
   double maxStepYawDeg = 2.0;           // ... and turns at most this much
   double translationTolerance = 1e-3;   // converged when a step is below these

@@ -29,13 +29,24 @@ Eigen::Vector3d ascentDirection(const NdtScore& s, double yawLength) {
 
 }  // namespace
 
-NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span<const Eigen::Vector2d> points,
+NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span<const Eigen::Vector2d> all,
                             const Eigen::Vector3d& initial, const MatchOptions& o,
                             std::chrono::steady_clock::time_point deadline) {
   NdtOptimization result;
   result.pose = initial;
   const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = o.lookup};
+  std::vector<Eigen::Vector2d> subset;
+  const double finest = levels.empty() ? 1.0 : levels.back()->cellSize();
   for (const NdtGrid* grid : levels) {
+    // Coarser grids need fewer points: every (size / finest)^2-th one (capped by coarseStride).
+    const double ratio = grid->cellSize() / finest;
+    const size_t stride = std::clamp<size_t>(size_t(std::lround(ratio * ratio)), 1, size_t(o.maxCoarseStride));
+    std::span<const Eigen::Vector2d> points = all;
+    if (stride > 1 && all.size() / stride >= size_t(o.minPoints)) {
+      subset.clear();
+      for (size_t i = 0; i < all.size(); i += stride) subset.push_back(all[i]);
+      points = subset;
+    }
     Eigen::Vector3d x = result.pose;
     NdtScore s = scoreNdt(*grid, points, x, params);
     const double maxStep = o.maxStepCells * grid->cellSize(), maxYaw = o.maxStepYawDeg * kDegree;
