@@ -56,15 +56,17 @@ std::string matrix(const Eigen::Matrix3d& m) {
 }  // namespace
 
 int runMatch(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"frame", "init", "backend"}, .flags = {}, .minPositional = 1,
+  const CommandLine cl(args, {.valued = {"frame", "init", "backend", "time-budget"}, .flags = {}, .minPositional = 1,
                               .maxPositional = 1,
-                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl]"});
+                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--time-budget MS]"});
   if (!cl.has("frame")) throw Error("option --frame", "missing (the sweep to match)");
   const long long frame = cl.integer("frame", -1);
   if (frame < 0) throw Error("option --frame", "must not be negative");
   const Eigen::Vector3d offset = parseOffset(cl.value("init").value_or("0,0,0"));
   MatchOptions options;
   options.backend = parseBackend(cl.value("backend").value_or("ndt2d"));
+  options.timeBudgetMs = cl.number("time-budget", options.timeBudgetMs);
+  if (!(options.timeBudgetMs > 0) || !std::isfinite(options.timeBudgetMs)) throw Error("option --time-budget", "must be a positive number of milliseconds");
 
   const ArgoverseLog log(cl.positional()[0]);
   if (size_t(frame) >= log.sweepCount()) {

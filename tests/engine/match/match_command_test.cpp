@@ -12,10 +12,10 @@ namespace hdprior {
 namespace {
 
 TEST(MatchCommand, PrintsTheMatchAsJson) {
-  const test::CommandResult r = test::runHdprior("match '" + test::sharedLog().string() + "' --frame 0 --init 0.5,1.5,3");
+  const test::CommandResult r = test::runHdprior("match '" + test::sharedLog().string() + "' --frame 1 --init 0.5,1.5,3 --time-budget 10000");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["frame"], 0);
+  EXPECT_EQ(j["frame"], 1);
   EXPECT_EQ(j["backend"], "ndt2d");
   EXPECT_GT(j["road_points"].get<int>(), 1000);
   EXPECT_LT(std::abs(j["error"]["lateral"].get<double>()), 0.25);
@@ -42,6 +42,7 @@ TEST(MatchCommand, BadOptionsGiveOneLineAndStatusTwo) {
   const std::string log = "'" + test::sharedLog().string() + "'";
   for (const std::string& args : {log + " --frame 2", log + " --frame -1", log, log + " --frame 0 --init 1,2",
                                   log + " --frame 0 --init a,b,c", log + " --frame 0 --backend gicp",
+                                  log + " --frame 0 --time-budget 0",
                                   std::string("/nonexistent --frame 0")}) {
     const test::CommandResult r = test::runHdprior("match " + args);
     EXPECT_EQ(r.status, 2) << args;
