@@ -62,20 +62,23 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
       step *= scale;
       const double slope = s.gradient.dot(step);
       if (!(slope > 0.0)) break;
+      // The full step usually passes, so it is scored with derivatives at once (they are
+      // the next iteration's); shorter steps are scored alone first.
       bool moved = false;
       for (double alpha = 1.0; alpha > 1.0 / 64; alpha *= 0.5) {
         const Eigen::Vector3d candidate = x + alpha * step;
-        const double score = scoreNdt(*grid, points, candidate, params, NdtDerivatives::None).score;
-        if (score >= s.score + 1e-4 * alpha * slope) {
+        const NdtDerivatives what = alpha == 1.0 ? NdtDerivatives::GradientAndHessian : NdtDerivatives::None;
+        NdtScore trial = scoreNdt(*grid, points, candidate, params, what);
+        if (trial.score >= s.score + 1e-4 * alpha * slope) {
           x = candidate;
           step *= alpha;
           moved = true;
+          s = what == NdtDerivatives::None ? scoreNdt(*grid, points, x, params) : trial;
           break;
         }
       }
       ++result.iterations;
       if (!moved) break;
-      s = scoreNdt(*grid, points, x, params);
       if (step.head<2>().norm() < o.translationTolerance && std::abs(step.z()) < o.yawToleranceDeg * kDegree) break;
     }
     result.pose = x;
