@@ -11,5 +11,6 @@ int runExportMap(const std::vector<std::string>& args);
 int runSnapshot(const std::vector<std::string>& args);
 int runRun(const std::vector<std::string>& args);
 int runSim(const std::vector<std::string>& args);
+int runMatch(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -1,0 +1,106 @@
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "engine/error.h"
+#include "engine/geom/se2.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/lidar/sweep_road_points.h"
+#include "engine/map/hd_map.h"
+#include "engine/match/map_matcher.h"
+
+namespace hdprior::app {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// "dx,dy,dyaw_deg" -> (dx, dy, dyaw in radians).
+Eigen::Vector3d parseOffset(const std::string& text) {
+  Eigen::Vector3d v;
+  std::istringstream in(text);
+  char c1 = 0, c2 = 0;
+  if (!(in >> v.x() >> c1 >> v.y() >> c2 >> v.z()) || c1 != ',' || c2 != ',' || !in.eof() || !v.allFinite() ||
+      v.head<2>().norm() > 100.0 || std::abs(v.z()) > 180.0) {
+    throw Error("option --init", "'" + text + "' is not dx,dy,dyaw_deg (metres, metres, degrees; |d| <= 100 m)");
+  }
+  v.z() *= kDeg;
+  return v;
+}
+
+MatchBackend parseBackend(const std::string& text) {
+  if (text == "ndt2d") return MatchBackend::Ndt2d;
+  if (text == "pcl") return MatchBackend::PclNdt;
+  throw Error("option --backend", "'" + text + "' is not ndt2d or pcl");
+}
+
+std::string pose(const Eigen::Vector3d& p) {
+  char b[160];
+  std::snprintf(b, sizeof b, "{\"x\": %.4f, \"y\": %.4f, \"yaw_deg\": %.4f}", p.x(), p.y(), p.z() / kDeg);
+  return b;
+}
+
+std::string matrix(const Eigen::Matrix3d& m) {
+  std::string s = "[";
+  for (int r = 0; r < 3; ++r) {
+    char b[160];
+    std::snprintf(b, sizeof b, "%s[%.6g, %.6g, %.6g]", r ? ", " : "", m(r, 0), m(r, 1), m(r, 2));
+    s += b;
+  }
+  return s + "]";
+}
+
+}  // namespace
+
+int runMatch(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {.valued = {"frame", "init", "backend", "time-budget"}, .flags = {}, .minPositional = 1,
+                              .maxPositional = 1,
+                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--time-budget MS]"});
+  if (!cl.has("frame")) throw Error("option --frame", "missing (the sweep to match)");
+  const long long frame = cl.integer("frame", -1);
+  if (frame < 0) throw Error("option --frame", "must not be negative");
+  const Eigen::Vector3d offset = parseOffset(cl.value("init").value_or("0,0,0"));
+  MatchOptions options;
+  options.backend = parseBackend(cl.value("backend").value_or("ndt2d"));
+  options.timeBudgetMs = cl.number("time-budget", options.timeBudgetMs);
+  if (!(options.timeBudgetMs > 0) || !std::isfinite(options.timeBudgetMs)) throw Error("option --time-budget", "must be a positive number of milliseconds");
+
+  const ArgoverseLog log(cl.positional()[0]);
+  if (size_t(frame) >= log.sweepCount()) {
+    throw Error("option --frame", "frame " + std::to_string(frame) + " is out of range (the log has " +
+                                      std::to_string(log.sweepCount()) + " sweeps)");
+  }
+  const int64_t stamp = log.sweepTimestamps()[size_t(frame)];
+  if (!log.cityTEgo().covers(stamp)) throw Error(log.dir().string(), "no ground-truth pose at the sweep's timestamp");
+  HdMapOptions mapOptions;
+  mapOptions.ndtCellSizes = options.cellSizes;
+  const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
+
+  // Roll and pitch come from the ground truth here (the pipeline takes them from odometry).
+  const SE3 truth3 = log.cityTEgo().at(stamp);
+  const Eigen::Vector3d truth = planarPose(truth3);
+  const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*log.sweep(size_t(frame)), levelRotation(truth3));
+  const Eigen::Vector3d initial = offsetPose(truth, offset);
+  MapMatcher matcher(map, options);
+  const MatchResult r = matcher.match(points, initial);
+  const Eigen::Vector3d e = planarError(truth, r.estimate);
+
+  std::printf("{\n  \"log\": \"%s\",\n  \"frame\": %lld,\n  \"timestamp_ns\": %lld,\n  \"backend\": \"%s\",\n",
+              log.id().c_str(), frame, (long long)stamp, options.backend == MatchBackend::Ndt2d ? "ndt2d" : "pcl");
+  std::printf("  \"road_points\": %zu,\n  \"truth\": %s,\n  \"initial\": %s,\n  \"estimate\": %s,\n", r.points,
+              pose(truth).c_str(), pose(initial).c_str(), pose(r.estimate).c_str());
+  std::printf("  \"error\": {\"along\": %.4f, \"lateral\": %.4f, \"yaw_deg\": %.4f},\n", e.x(), e.y(), e.z() / kDeg);
+  std::printf("  \"status\": \"%s\",\n  \"reason\": \"%s\",\n", toString(r.status), r.reason.c_str());
+  std::printf("  \"score\": %.4f,\n  \"score_per_point\": %.5f,\n  \"inlier_ratio\": %.4f,\n  \"gate_chi2\": %.4f,\n",
+              r.score, r.scorePerPoint, r.inlierRatio, r.gateChi2);
+  std::printf("  \"iterations\": %d,\n  \"time_ms\": %.3f,\n  \"observable_directions\": %d,\n", r.iterations,
+              r.timeMs, r.observableDirections);
+  std::printf("  \"covariance_x_y_yaw\": %s,\n  \"information_x_y_yaw\": %s\n}\n", matrix(r.covariance).c_str(),
+              matrix(r.information).c_str());
+  return 0;
+}
+
+}  // namespace hdprior::app

@@ -1,0 +1,125 @@
+#include "engine/graph/pose_graph.h"
+
+#include <algorithm>
+#include <string>
+
+#include <ceres/ceres.h>
+
+#include "engine/error.h"
+#include "engine/graph/pose_factors.h"
+
+namespace hdprior {
+
+struct PoseGraph::Impl {
+  ceres::Problem problem;
+  std::vector<std::unique_ptr<Eigen::Quaterniond>> q;  // stable addresses for Ceres
+  std::vector<std::unique_ptr<Eigen::Vector3d>> t;
+  std::vector<bool> hasPrior;
+  bool firstFixed = false;
+};
+
+PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
+  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0) {
+    throw Error("pose graph options", "priorHuber, maxIterations or incrementalWindow out of range");
+  }
+}
+
+PoseGraph::~PoseGraph() = default;
+
+size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial) {
+  if (!timestamps_.empty() && timestampNs <= timestamps_.back()) {
+    throw Error("pose graph", "keyframe timestamps must increase");
+  }
+  timestamps_.push_back(timestampNs);
+  initial_.push_back(initial);
+  impl_->q.push_back(std::make_unique<Eigen::Quaterniond>(Eigen::Quaterniond(initial.rotation()).normalized()));
+  impl_->t.push_back(std::make_unique<Eigen::Vector3d>(initial.translation()));
+  impl_->hasPrior.push_back(false);
+  impl_->problem.AddParameterBlock(impl_->q.back()->coeffs().data(), 4, new ceres::EigenQuaternionManifold);
+  impl_->problem.AddParameterBlock(impl_->t.back()->data(), 3);
+  return timestamps_.size() - 1;
+}
+
+void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information) {
+  if (i >= size() || j >= size() || i == j) throw Error("pose graph", "odometry between unknown keyframes");
+  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3>(
+      new BetweenFactor(iTj, sqrtInformation<6>(information)));
+  impl_->problem.AddResidualBlock(cost, nullptr, impl_->q[i]->coeffs().data(), impl_->t[i]->data(),
+                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data());
+}
+
+void PoseGraph::addPrior(size_t i, const PosePrior& prior) {
+  if (i >= size()) throw Error("pose graph", "prior on an unknown keyframe");
+  auto* cost = new ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3>(
+      new PriorFactor(prior.pose, sqrtInformation<4>(prior.information)));
+  impl_->problem.AddResidualBlock(cost, new ceres::HuberLoss(options_.priorHuber), impl_->q[i]->coeffs().data(),
+                                  impl_->t[i]->data());
+  impl_->hasPrior[i] = true;
+}
+
+SolveSummary PoseGraph::solve(bool incremental) {
+  SolveSummary summary;
+  if (size() == 0) return summary;
+  ceres::Problem& p = impl_->problem;
+  // Gauge: without any prior, the first keyframe anchors the graph.
+  const bool anyPrior = std::any_of(impl_->hasPrior.begin(), impl_->hasPrior.end(), [](bool b) { return b; });
+  for (size_t i = 0; i < size(); ++i) {
+    const bool fixed = (i == 0 && !anyPrior) ||
+                       (incremental && options_.incrementalWindow > 0 && i + size_t(options_.incrementalWindow) < size());
+    double* blocks[2] = {impl_->q[i]->coeffs().data(), impl_->t[i]->data()};
+    for (double* b : blocks) {
+      if (fixed) {
+        p.SetParameterBlockConstant(b);
+      } else {
+        p.SetParameterBlockVariable(b);
+      }
+    }
+  }
+  ceres::Solver::Options o;
+  o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  o.max_num_iterations = options_.maxIterations;
+  o.num_threads = 1;  // deterministic
+  ceres::Solver::Summary s;
+  ceres::Solve(o, &p, &s);
+  summary.iterations = int(s.iterations.size());
+  summary.initialCost = s.initial_cost;
+  summary.finalCost = s.final_cost;
+  summary.converged = s.termination_type == ceres::CONVERGENCE;
+  return summary;
+}
+
+SE3 PoseGraph::pose(size_t i) const {
+  if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
+  return makeSE3(*impl_->q[i], *impl_->t[i]);
+}
+
+std::vector<SE3> PoseGraph::poses() const {
+  std::vector<SE3> out;
+  for (size_t i = 0; i < size(); ++i) out.push_back(pose(i));
+  return out;
+}
+
+PoseTrajectory PoseGraph::correct(const PoseTrajectory& trajectory) const {
+  if (size() == 0) return trajectory;
+  std::vector<SE3> corrections;
+  for (size_t i = 0; i < size(); ++i) corrections.push_back(pose(i) * initial_[i].inverse());
+  std::vector<SE3> out;
+  for (size_t k = 0; k < trajectory.size(); ++k) {
+    const int64_t t = trajectory.timestamps()[k];
+    const auto it = std::upper_bound(timestamps_.begin(), timestamps_.end(), t);
+    SE3 c;
+    if (it == timestamps_.begin()) {
+      c = corrections.front();
+    } else if (it == timestamps_.end()) {
+      c = corrections.back();
+    } else {
+      const size_t j = size_t(it - timestamps_.begin()), i = j - 1;
+      const double s = double(t - timestamps_[i]) / double(timestamps_[j] - timestamps_[i]);
+      c = interpolate(corrections[i], corrections[j], s);
+    }
+    out.push_back(c * trajectory.poses()[k]);
+  }
+  return PoseTrajectory(trajectory.timestamps(), std::move(out), "corrected trajectory");
+}
+
+}  // namespace hdprior

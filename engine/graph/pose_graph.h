@@ -1,0 +1,64 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/geom/pose_trajectory.h"
+#include "engine/geom/se3.h"
+#include "engine/graph/pose_prior.h"
+
+namespace hdprior {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+struct PoseGraphOptions {
+  double priorHuber = 1.0;     // robust (Huber) loss on prior residuals, in whitened units
+  int maxIterations = 50;      // per solve
+  int incrementalWindow = 0;   // 0: every keyframe is free in incremental solves; else only the last N
+};
+
+struct SolveSummary {
+  int iterations = 0;
+  double initialCost = 0, finalCost = 0;
+  bool converged = false;
+};
+
+// The pose graph of the paper's eq. (main pgo) in Ceres: keyframe poses city_T_ego,
+// odometry between-factors (SE(3) residual [Log(R_meas^-1 R_i^-1 R_j); R_i^-1 (t_j - t_i) - t_meas]
+// whitened by their information) and HD-map prior factors (yaw, x, y, z) with a Huber loss.
+// The first keyframe is held fixed when it has no prior. Solves warm-start from the current
+// estimates, so calling solve() after each new keyframe is the incremental use; the last call is
+// the final batch solve.
+class PoseGraph {
+ public:
+  explicit PoseGraph(PoseGraphOptions options = {});
+  ~PoseGraph();
+  PoseGraph(const PoseGraph&) = delete;
+  PoseGraph& operator=(const PoseGraph&) = delete;
+
+  // Returns the keyframe's index. Timestamps must increase.
+  size_t addKeyframe(int64_t timestampNs, const SE3& initial);
+  // information over the residual [rotation (3), translation (3)].
+  void addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information);
+  void addPrior(size_t i, const PosePrior& prior);
+
+  SolveSummary solve(bool incremental = false);
+
+  size_t size() const { return timestamps_.size(); }
+  SE3 pose(size_t i) const;
+  std::vector<SE3> poses() const;
+  // Every pose of `trajectory` corrected by the keyframes' correction (optimised * initial^-1),
+  // interpolated in time between keyframes and held constant beyond the first/last.
+  PoseTrajectory correct(const PoseTrajectory& trajectory) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  PoseGraphOptions options_;
+  std::vector<int64_t> timestamps_;
+  std::vector<SE3> initial_;
+};
+
+}  // namespace hdprior

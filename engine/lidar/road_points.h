@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hdprior {
+
+// Road-point extraction: of the ground points, the road surface the vehicle drives on,
+// separated from sidewalks and verges at the curbs. Each laser ring is walked along its
+// azimuth, over ground points only, from seeds ahead of and behind the vehicle in its lane
+// at road level, outwards in both directions; the walk stops where the height differs by more
+// than a step from any road point of the walk just before it (a curb: about 0.15 m) or the gap along
+// the ring grows too long. Non-ground returns (cars, pedestrians) are stepped over, so the
+// walk continues on the road behind an occluder but not onto a raised sidewalk.
+struct RoadPointOptions {
+  double groundZ = -0.32;          // road level under the ego origin
+  double maxRange = 40.0;          // metres from the origin
+  double maxStep = 0.05;           // height change allowed between consecutive ground points ...
+  double stepPerMetre = 0.01;      // ... plus this much per metre between them
+  double maxGap = 5.0;             // a longer gap along the ring ends the walk, metres
+  double window = 3.0;             // the step test covers the walk's road points this far back
+  int maxSkipped = 3;              // this many consecutive points off the road height end the walk
+  double seedHalfWidth = 1.5;      // seeds: ground points within this of the vehicle's x axis ...
+  double seedTolerance = 0.12;     // ... within this of groundZ ...
+  double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
+};
+
+// One flag per point: 1 = road. `ring` is each point's laser number, `ground` its ground
+// flag (segmentGround); all three have the points' length.
+std::vector<uint8_t> extractRoadPoints(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ring,
+                                       std::span<const uint8_t> ground, const RoadPointOptions& options = {});
+
+// The flagged points projected to the plane (x, y), thinned to one point (the mean) per
+// `cell` metres square (0 keeps every point), in a deterministic order.
+std::vector<Eigen::Vector2d> planarPoints(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> flags,
+                                          double cell = 0.0);
+
+}  // namespace hdprior

@@ -1,0 +1,57 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/map/ndt_score.h"
+
+namespace hdprior {
+
+enum class MatchBackend { Ndt2d, PclNdt };
+
+// How a scan-to-map match is searched for and judged. Defaults are the ones measured in
+// the README (Matching section).
+struct MatchOptions {
+  MatchBackend backend = MatchBackend::Ndt2d;
+
+  // --- 2-D NDT (Ndt2d) ---
+  // Coarse to fine; the map must carry an NDT grid of each size (HdMapOptions::ndtCellSizes).
+  std::vector<double> cellSizes = {4.0, 2.0, 1.0};
+  double outlierRatio = 0.55;
+  NdtLookup lookup = NdtLookup::FourNearest;
+  int maxIterations = 25;               // Newton iterations per level
+  int maxCoarseStride = 1;              // coarse levels may use every (size / finest)^2-th point, at most this (1: all; larger measured less robust)
+  double maxStepCells = 0.5;            // a step moves at most this many cells ...
+  double maxStepYawDeg = 2.0;           // ... and turns at most this much
+  double translationTolerance = 1e-3;   // converged when a step is below these
+  double yawToleranceDeg = 1e-3;
+  double timeBudgetMs = 100.0;          // the match stops (status Rejected) beyond this
+
+  // --- PCL's 3-D NDT on the same points at z = 0 (PclNdt) ---
+  double pclResolution = 1.0;           // voxel size, metres
+  double pclStepSize = 0.1;             // More-Thuente maximum step
+  double pclEpsilon = 0.01;             // transformation epsilon
+  int pclMaxIterations = 35;
+  double pclTargetSpacing = 0.2;        // drivable points of the map are thinned to this grid
+
+  // --- Covariance and acceptance (both backends) ---
+  // Points in one NDT cell are not independent observations: the Laplace information
+  // -H / (|d1| d2) is scaled by (distinct cells hit / points).
+  bool perCellInformation = true;
+  double yawLength = 10.0;              // metres; yaw is compared with translation as yaw * yawLength
+  // Observability from the drivable boundary: points within boundaryBand of it add their
+  // boundary normal's constraint; a direction is observable when its constraint eigenvalue
+  // is at least degenerateRatio of the largest and at least minBoundaryPoints (point-equivalents).
+  double boundaryBand = 1.0;            // metres
+  double degenerateRatio = 0.02;
+  double minBoundaryPoints = 20.0;
+  double minInformation = 4.0;          // and the NDT information there at least this (sigma <= 0.5 m)
+  int minPoints = 200;
+  double minInlierRatio = 0.6;          // share of points placed on the drivable area
+  // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.
+  Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
+  double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
+  double minScorePerPoint = 0.0;        // NDT score per point on the finest grid (max |d1|, 2.2 at 1 m)
+};
+
+}  // namespace hdprior

@@ -1,0 +1,41 @@
+#pragma once
+#include <cstddef>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace hdprior {
+
+enum class MatchStatus {
+  Accepted,    // all three directions observed
+  Degenerate,  // some direction (along a straight road) is unobservable; information kept in the others
+  Rejected,    // poor fit, too few points, inconsistent with the prediction, or out of time
+};
+
+const char* toString(MatchStatus status);
+
+// The outcome of matching road points to the drivable area. Poses and covariances are over
+// the city-frame SE(2) pose (x, y, yaw) of the points' frame (ego / key frame).
+struct MatchResult {
+  Eigen::Vector3d initial = Eigen::Vector3d::Zero();
+  Eigen::Vector3d estimate = Eigen::Vector3d::Zero();
+  // Information kept for the prior (zero in unobservable directions) and its pseudo-inverse.
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // Eigen-decomposition of the drivable boundary's constraint on the pose in scaled units
+  // (x, y, yaw * yawLength), ascending: which directions the map's edges observe.
+  Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d eigenvectors = Eigen::Matrix3d::Identity();
+  int observableDirections = 0;
+  MatchStatus status = MatchStatus::Rejected;
+  std::string reason;        // why it is degenerate or rejected
+  double score = 0.0;        // NDT score at the estimate on the finest grid
+  double scorePerPoint = 0.0;
+  double inlierRatio = 0.0;  // share of points on the drivable area at the estimate
+  double gateChi2 = 0.0;     // Mahalanobis distance^2 of estimate - initial under the prediction
+  int iterations = 0;
+  double timeMs = 0.0;
+  size_t points = 0;
+};
+
+}  // namespace hdprior

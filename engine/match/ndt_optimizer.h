@@ -1,0 +1,29 @@
+#pragma once
+#include <chrono>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/match/match_options.h"
+
+namespace hdprior {
+
+class NdtGrid;
+
+struct NdtOptimization {
+  Eigen::Vector3d pose = Eigen::Vector3d::Zero();
+  int iterations = 0;
+  bool timedOut = false;
+};
+
+// Maximises the NDT score of 2-D points over the SE(2) pose, grid by grid (coarse to fine),
+// each from the previous optimum: Newton steps on the score with the Hessian made negative
+// definite (eigenvalues in units of x, y, yaw * yawLength lifted to a floor, so flat
+// directions take gradient steps instead of huge or backward Newton steps), step lengths
+// bounded per cell size, and a backtracking (Armijo) line search. Stops at the deadline.
+NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span<const Eigen::Vector2d> points,
+                            const Eigen::Vector3d& initial, const MatchOptions& options,
+                            std::chrono::steady_clock::time_point deadline);
+
+}  // namespace hdprior

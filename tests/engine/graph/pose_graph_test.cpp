@@ -1,0 +1,256 @@
+// Pose-graph factors and optimisation: analytic (automatic) Jacobians of the prior and
+// between factors against central differences, yaw wrapping, the HD-map prior built from a
+// match and the ground height (on the real log), and PGO recovering a known trajectory from
+// noisy odometry plus priors, incrementally and in batch.
+#include "engine/graph/pose_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <ceres/ceres.h>
+
+#include "engine/error.h"
+#include "engine/geom/se2.h"
+#include "engine/graph/pose_factors.h"
+#include "engine/graph/pose_prior.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/ground_height.h"
+#include "engine/match/match_result.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+SE3 poseOf(double x, double y, double z, double yaw, double pitch = 0.0, double roll = 0.0) {
+  SE3 T = SE3::Identity();
+  T.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                   .toRotationMatrix();
+  T.translation() = Eigen::Vector3d(x, y, z);
+  return T;
+}
+
+// Compares the Jacobians of an automatically differentiated cost with central differences.
+void expectJacobiansMatch(ceres::CostFunction& autodiff, ceres::CostFunction& numeric,
+                          const std::vector<double*>& parameters, double tolerance) {
+  const int m = autodiff.num_residuals();
+  std::vector<std::vector<double>> ja, jn;
+  std::vector<double*> pa, pn;
+  for (int size : autodiff.parameter_block_sizes()) {
+    ja.emplace_back(size_t(m * size));
+    jn.emplace_back(size_t(m * size));
+  }
+  for (size_t b = 0; b < ja.size(); ++b) {
+    pa.push_back(ja[b].data());
+    pn.push_back(jn[b].data());
+  }
+  std::vector<double> ra(static_cast<size_t>(m)), rn(static_cast<size_t>(m));
+  ASSERT_TRUE(autodiff.Evaluate(parameters.data(), ra.data(), pa.data()));
+  ASSERT_TRUE(numeric.Evaluate(parameters.data(), rn.data(), pn.data()));
+  for (int k = 0; k < m; ++k) EXPECT_NEAR(ra[size_t(k)], rn[size_t(k)], 1e-12);
+  double largest = 0;
+  for (size_t b = 0; b < ja.size(); ++b) {
+    for (size_t k = 0; k < ja[b].size(); ++k) {
+      EXPECT_NEAR(ja[b][k], jn[b][k], tolerance) << "block " << b << " entry " << k;
+      largest = std::max(largest, std::abs(ja[b][k]));
+    }
+  }
+  EXPECT_GT(largest, 0.1);  // the Jacobians are not trivially zero
+}
+
+TEST(PoseFactors, PriorJacobiansMatchCentralDifferences) {
+  const SE3 prior = poseOf(10, -4, 2, 0.7, 0.02, -0.01);
+  Eigen::Matrix4d info;
+  info << 400, 10, -5, 0, 10, 25, 3, 0, -5, 3, 30, 0, 0, 0, 0, 100;
+  const PriorFactor f(prior, sqrtInformation<4>(info));
+  ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3> autodiff(new PriorFactor(f));
+  ceres::NumericDiffCostFunction<PriorFactor, ceres::CENTRAL, 4, 4, 3> numeric(new PriorFactor(f));
+  Eigen::Quaterniond q(poseOf(0, 0, 0, 0.9, 0.05, 0.03).rotation());
+  Eigen::Vector3d t(10.5, -3.7, 2.2);
+  expectJacobiansMatch(autodiff, numeric, {q.coeffs().data(), t.data()}, 1e-6);
+}
+
+TEST(PoseFactors, BetweenJacobiansMatchCentralDifferences) {
+  Eigen::Matrix<double, 6, 6> info = Eigen::Matrix<double, 6, 6>::Identity() * 100.0;
+  info(0, 3) = info(3, 0) = 5.0;
+  const BetweenFactor f(poseOf(2.0, 0.1, 0.0, 0.05), sqrtInformation<6>(info));
+  ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3> autodiff(new BetweenFactor(f));
+  ceres::NumericDiffCostFunction<BetweenFactor, ceres::CENTRAL, 6, 4, 3, 4, 3> numeric(new BetweenFactor(f));
+  Eigen::Quaterniond qi(poseOf(0, 0, 0, 0.3, 0.02).rotation()), qj(poseOf(0, 0, 0, 0.36, -0.01, 0.02).rotation());
+  Eigen::Vector3d ti(1, 2, 3), tj(2.9, 2.8, 3.1);
+  expectJacobiansMatch(autodiff, numeric, {qi.coeffs().data(), ti.data(), qj.coeffs().data(), tj.data()}, 1e-6);
+}
+
+TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
+  const SE3 a = poseOf(1, 2, 3, 0.4, 0.01), b = poseOf(3, 1, 3.2, 0.5, -0.02, 0.01);
+  const BetweenFactor between(a.inverse() * b, Eigen::Matrix<double, 6, 6>::Identity());
+  Eigen::Quaterniond qa(a.rotation()), qb(b.rotation());
+  Eigen::Vector3d ta = a.translation(), tb = b.translation();
+  double r6[6];
+  between(qa.coeffs().data(), ta.data(), qb.coeffs().data(), tb.data(), r6);
+  const Eigen::Map<Eigen::Matrix<double, 6, 1>> residual6(r6);
+  EXPECT_LT(residual6.norm(), 1e-12);
+
+  const PriorFactor prior(poseOf(0, 0, 0, 179 * kDeg), Eigen::Matrix4d::Identity());
+  Eigen::Quaterniond q(poseOf(0, 0, 0, -179 * kDeg).rotation());
+  Eigen::Vector3d t(0, 0, 0);
+  double r4[4];
+  prior(q.coeffs().data(), t.data(), r4);
+  EXPECT_NEAR(r4[0], 2 * kDeg, 1e-12);  // not -358 degrees
+}
+
+TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
+  const ArgoverseLog log(test::sharedLog());
+  const GroundHeight ground = readGroundHeight(log.mapFiles().groundHeight, log.mapFiles().sim2);
+  const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[0]);
+  MatchResult match;
+  match.estimate = planarPose(truth);
+  match.information = Eigen::Vector3d(100, 200, 3000).asDiagonal();
+  const SE3 odometry = truth * poseOf(0.5, -0.3, 0.4, 0.02);  // wrong by a little, incl. z
+  const PosePrior prior = makePosePrior(match, odometry, ground);
+  EXPECT_NEAR(prior.pose.translation().z(), truth.translation().z(), 0.10);  // ego 0.32 m above the raster
+  EXPECT_NEAR(prior.pose.translation().x(), truth.translation().x(), 1e-9);
+  EXPECT_NEAR(yawOf(prior.pose), yawOf(truth), 1e-9);
+  // Roll and pitch are the odometry's.
+  EXPECT_TRUE(levelRotation(prior.pose).isApprox(levelRotation(odometry), 1e-9));
+  // Information reordered to (yaw, x, y, z).
+  EXPECT_DOUBLE_EQ(prior.information(0, 0), 3000);
+  EXPECT_DOUBLE_EQ(prior.information(1, 1), 100);
+  EXPECT_DOUBLE_EQ(prior.information(2, 2), 200);
+  EXPECT_DOUBLE_EQ(prior.information(3, 3), 100);  // 0.1 m altitude sigma
+  EXPECT_TRUE(std::isnan(priorAltitude(ground, 0.0, 0.0, 0.32)));  // far outside the map
+}
+
+// A winding, hilly ground-truth trajectory of keyframes 2 m apart.
+std::vector<SE3> truthTrajectory(int n) {
+  std::vector<SE3> poses;
+  double x = 0, y = 0, yaw = 0;
+  for (int k = 0; k < n; ++k) {
+    poses.push_back(poseOf(x, y, 0.02 * x + std::sin(0.05 * k), yaw, 0.02, 0.005 * std::sin(0.3 * k)));
+    yaw += 0.04 * std::sin(0.1 * k);
+    x += 2.0 * std::cos(yaw);
+    y += 2.0 * std::sin(yaw);
+  }
+  return poses;
+}
+
+double rmse(const std::vector<SE3>& a, const std::vector<SE3>& b) {
+  double sum = 0;
+  for (size_t k = 0; k < a.size(); ++k) sum += (a[k].translation() - b[k].translation()).squaredNorm();
+  return std::sqrt(sum / double(a.size()));
+}
+
+struct Scenario {
+  std::vector<SE3> truth, odometryPoses, relative;
+  std::vector<PosePrior> priors;  // one per 4th keyframe
+};
+
+Scenario makeScenario(int n) {
+  Scenario s;
+  s.truth = truthTrajectory(n);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  s.odometryPoses.push_back(s.truth[0]);
+  for (int k = 1; k < n; ++k) {
+    const SE3 exact = s.truth[size_t(k) - 1].inverse() * s.truth[size_t(k)];
+    // Odometry: a yaw bias plus noise, 2 % scale noise.
+    const SE3 noisy = exact * poseOf(0.04 * unit(rng), 0.02 * unit(rng), 0.01 * unit(rng), 0.004 + 0.002 * unit(rng),
+                                     0.001 * unit(rng), 0.001 * unit(rng));
+    s.relative.push_back(noisy);
+    s.odometryPoses.push_back(s.odometryPoses.back() * noisy);
+  }
+  for (int k = 0; k < n; k += 4) {
+    PosePrior p;
+    const SE3& t = s.truth[size_t(k)];
+    p.pose = t * poseOf(0.1 * unit(rng), 0.1 * unit(rng), 0.05 * unit(rng), 0.3 * kDeg * unit(rng));
+    p.pose.linear() = Eigen::AngleAxisd(yawOf(p.pose), Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+                      levelRotation(s.odometryPoses[size_t(k)]);
+    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 100, 100, 400).asDiagonal();
+    s.priors.push_back(p);
+  }
+  return s;
+}
+
+Matrix6d odometryInformation() {
+  Matrix6d info = Matrix6d::Zero();
+  info.diagonal() << 1 / std::pow(0.003, 2), 1 / std::pow(0.003, 2), 1 / std::pow(0.003, 2), 1 / std::pow(0.04, 2),
+      1 / std::pow(0.03, 2), 1 / std::pow(0.02, 2);
+  return info;
+}
+
+TEST(PoseGraph, RecoversAKnownTrajectoryFromNoisyOdometryAndPriors) {
+  const int n = 60;
+  const Scenario s = makeScenario(n);
+  PoseGraph graph;
+  for (int k = 0; k < n; ++k) graph.addKeyframe(int64_t(k) * 1'000'000'000, s.odometryPoses[size_t(k)]);
+  for (int k = 1; k < n; ++k) graph.addOdometry(size_t(k) - 1, size_t(k), s.relative[size_t(k) - 1], odometryInformation());
+  for (size_t p = 0; p < s.priors.size(); ++p) graph.addPrior(p * 4, s.priors[p]);
+  const double before = rmse(s.odometryPoses, s.truth);
+  const SolveSummary summary = graph.solve();
+  const double after = rmse(graph.poses(), s.truth);
+  std::printf("ATE RMSE odometry %.3f m -> with priors %.3f m (%d iterations)\n", before, after, summary.iterations);
+  EXPECT_GT(before, 1.0);
+  EXPECT_LT(after, 0.15);
+  EXPECT_LT(after * 3.0, before);
+  EXPECT_LT(summary.finalCost, summary.initialCost);
+}
+
+TEST(PoseGraph, IncrementalSolvesEndWhereTheBatchSolveDoes) {
+  const int n = 40;
+  const Scenario s = makeScenario(n);
+  PoseGraph incremental, batch;
+  for (int k = 0; k < n; ++k) {
+    for (PoseGraph* g : {&incremental, &batch}) {
+      g->addKeyframe(int64_t(k) * 1'000'000'000, k == 0 ? s.odometryPoses[0]
+                                                          : g->pose(size_t(k) - 1) * s.relative[size_t(k) - 1]);
+      if (k > 0) g->addOdometry(size_t(k) - 1, size_t(k), s.relative[size_t(k) - 1], odometryInformation());
+      if (k % 4 == 0) g->addPrior(size_t(k), s.priors[size_t(k / 4)]);
+    }
+    incremental.solve(true);  // warm-started from the previous solution
+  }
+  incremental.solve();
+  batch.solve();
+  for (int k = 0; k < n; ++k) {
+    EXPECT_LT((incremental.pose(size_t(k)).translation() - batch.pose(size_t(k)).translation()).norm(), 1e-3) << k;
+  }
+  EXPECT_LT(rmse(incremental.poses(), s.truth), 0.15);
+}
+
+TEST(PoseGraph, CorrectsEverySweepByInterpolatingTheKeyframeCorrections) {
+  PoseGraph graph;
+  graph.addKeyframe(0, poseOf(0, 0, 0, 0));
+  graph.addKeyframe(10, poseOf(10, 0, 0, 0));
+  PosePrior a, b;
+  a.pose = poseOf(0, 1, 0, 0);
+  b.pose = poseOf(10, 3, 0, 0);
+  a.information = b.information = Eigen::Vector4d(1e6, 1e6, 1e6, 1e6).asDiagonal();
+  graph.addPrior(0, a);
+  graph.addPrior(1, b);
+  graph.addOdometry(0, 1, poseOf(10, 0, 0, 0), Matrix6d::Identity() * 1e-6);
+  graph.solve();
+  const PoseTrajectory sweeps({-5, 0, 5, 10, 15}, {poseOf(-5, 0, 0, 0), poseOf(0, 0, 0, 0), poseOf(5, 0, 0, 0),
+                                                   poseOf(10, 0, 0, 0), poseOf(15, 0, 0, 0)});
+  const PoseTrajectory corrected = graph.correct(sweeps);
+  EXPECT_NEAR(corrected.poses()[0].translation().y(), 1.0, 1e-3);  // before the first: its correction
+  EXPECT_NEAR(corrected.poses()[1].translation().y(), 1.0, 1e-3);
+  EXPECT_NEAR(corrected.poses()[2].translation().y(), 2.0, 1e-3);  // halfway
+  EXPECT_NEAR(corrected.poses()[3].translation().y(), 3.0, 1e-3);
+  EXPECT_NEAR(corrected.poses()[4].translation().y(), 3.0, 1e-3);
+}
+
+TEST(PoseGraph, RejectsBadInput) {
+  PoseGraph graph;
+  graph.addKeyframe(5, SE3::Identity());
+  EXPECT_THROW(graph.addKeyframe(5, SE3::Identity()), Error);
+  EXPECT_THROW(graph.addOdometry(0, 1, SE3::Identity(), Matrix6d::Identity()), Error);
+  EXPECT_THROW(graph.addPrior(3, PosePrior{}), Error);
+  EXPECT_THROW(PoseGraph({.priorHuber = 0.0}), Error);
+}
+
+}  // namespace
+}  // namespace hdprior

@@ -1,0 +1,108 @@
+// Ground segmentation and road points on a synthetic street with curbs, sidewalks, walls
+// and a car, scanned by a simulated 32-ring lidar.
+#include "engine/lidar/road_points.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "engine/error.h"
+#include "engine/lidar/ground_segmentation.h"
+#include "synthetic_scan.h"
+
+namespace hdprior {
+namespace {
+
+using test::Surface;
+
+struct Labelled {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<uint8_t> rings;
+  std::vector<Surface> truth;
+};
+
+Labelled scan(const test::Street& street) {
+  Labelled l;
+  for (const test::ScanPoint& p : test::scanStreet(street)) {
+    l.points.push_back(p.p);
+    l.rings.push_back(p.ring);
+    l.truth.push_back(p.surface);
+  }
+  return l;
+}
+
+// Share of the points of each true surface (within the options' ranges) given the flag.
+std::map<Surface, double> flaggedShare(const Labelled& l, const std::vector<uint8_t>& flags, double minRange,
+                                       double maxRange) {
+  std::map<Surface, std::pair<double, double>> counts;
+  for (size_t i = 0; i < l.points.size(); ++i) {
+    const double r = l.points[i].head<2>().norm();
+    if (r < minRange || r > maxRange) continue;
+    counts[l.truth[i]].first += flags[i];
+    counts[l.truth[i]].second += 1;
+  }
+  std::map<Surface, double> share;
+  for (const auto& [s, c] : counts) share[s] = c.first / c.second;
+  return share;
+}
+
+TEST(GroundSegmentation, FindsRoadAndSidewalkButNotWallsOrCars) {
+  const Labelled l = scan({});
+  const std::vector<uint8_t> ground = segmentGround(l.points);
+  const auto share = flaggedShare(l, ground, 3.0, 40.0);
+  EXPECT_GT(share.at(Surface::Road), 0.97);
+  EXPECT_GT(share.at(Surface::Sidewalk), 0.85);
+  EXPECT_LT(share.at(Surface::Wall), 0.04);  // the bottom of a wall lies within planeDistance of the sidewalk
+  EXPECT_LT(share.at(Surface::Car), 0.02);
+}
+
+TEST(RoadPoints, StopAtCurbsAndStepOverCars) {
+  const Labelled l = scan({});
+  const std::vector<uint8_t> ground = segmentGround(l.points);
+  const std::vector<uint8_t> road = extractRoadPoints(l.points, l.rings, ground);
+  const auto share = flaggedShare(l, road, 3.0, 40.0);
+  EXPECT_GT(share.at(Surface::Road), 0.95);
+  EXPECT_LT(share.at(Surface::Sidewalk), 0.01);
+  EXPECT_LT(share.at(Surface::Wall), 0.001);
+  EXPECT_LT(share.at(Surface::Car), 0.001);
+  // Behind the car (the road seen past it on the same rings) is still road.
+  size_t behind = 0, behindRoad = 0;
+  for (size_t i = 0; i < l.points.size(); ++i) {
+    if (l.truth[i] == Surface::Road && l.points[i].x() > 10.5 && l.points[i].x() < 40.0 && l.points[i].y() < -1.2 && l.points[i].y() > -4.9) {
+      ++behind;
+      behindRoad += road[i];
+    }
+  }
+  ASSERT_GT(behind, 20u);
+  EXPECT_GT(double(behindRoad) / double(behind), 0.9);
+}
+
+TEST(RoadPoints, LowCurbIsStillACurb) {
+  test::Street street;
+  street.curb = 0.10;
+  const Labelled l = scan(street);
+  const std::vector<uint8_t> road = extractRoadPoints(l.points, l.rings, segmentGround(l.points));
+  EXPECT_LT(flaggedShare(l, road, 3.0, 40.0).at(Surface::Sidewalk), 0.02);
+}
+
+TEST(RoadPoints, PlanarPointsThinDeterministically) {
+  const std::vector<Eigen::Vector3d> points = {{0.1, 0.1, 0}, {0.3, 0.3, 0}, {1.2, 0.1, 0}, {5, 5, 0}};
+  const std::vector<uint8_t> flags = {1, 1, 1, 0};
+  const auto thin = planarPoints(points, flags, 1.0);
+  ASSERT_EQ(thin.size(), 2u);
+  EXPECT_TRUE(thin[0].isApprox(Eigen::Vector2d(0.2, 0.2)));
+  EXPECT_TRUE(thin[1].isApprox(Eigen::Vector2d(1.2, 0.1)));
+  EXPECT_EQ(planarPoints(points, flags).size(), 3u);
+}
+
+TEST(RoadPoints, RejectsMismatchedInputsAndBadOptions) {
+  const std::vector<Eigen::Vector3d> points(3, Eigen::Vector3d::Zero());
+  const std::vector<uint8_t> two(2, 0), three(3, 0);
+  EXPECT_THROW(extractRoadPoints(points, three, two), Error);
+  EXPECT_THROW(extractRoadPoints(points, two, three), Error);
+  EXPECT_THROW(extractRoadPoints(points, three, three, {.maxStep = 0.0}), Error);
+  EXPECT_THROW(segmentGround(points, {.zoneRadii = {8.0}}), Error);
+}
+
+}  // namespace
+}  // namespace hdprior
