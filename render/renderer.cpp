@@ -16,7 +16,17 @@ void Renderer::setScene(const Scene& scene) {
 }
 
 void Renderer::setFrame(const Frame& frame) {
-  for (const auto& layer : layers_) layer->setFrame(scene_, frame);
+  frame_ = frame;
+  for (const auto& layer : layers_) layer->setFrame(scene_, frame_);
+}
+
+void Renderer::rebuild(Layer& layer) { layer.setFrame(scene_, frame_); }
+
+size_t Renderer::pointsDrawn() const {
+  size_t n = 0;
+  for (const auto& layer : layers_)
+    if (layer->visible) n += layer->pointCount();
+  return n;
 }
 
 void Renderer::draw(const Camera& camera, int width, int height) const {
@@ -29,8 +39,12 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  const DrawContext context{camera.viewProjection(), *shaders_, float(height) / 720.0f};
-  for (const auto& layer : layers_) layer->draw(context);
+  DrawContext context{camera.viewProjection(), *shaders_, float(height) / 720.0f};
+  for (const auto& layer : layers_) {
+    if (!layer->visible) continue;
+    context.opacity = layer->opacity;
+    layer->draw(context);
+  }
 }
 
 }  // namespace hdprior::render

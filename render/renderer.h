@@ -22,13 +22,19 @@ class Renderer {
 
   void setScene(const Scene& scene);  // uploads static data of every layer
   void setFrame(const Frame& frame);  // uploads per-frame data
-  // Clears the viewport and draws the layers in order, bottom first.
+  // Builds one layer's per-frame data again after an option that `rebuilds` changed.
+  void rebuild(Layer& layer);
+  const Frame& frame() const { return frame_; }
+  // Lidar points of the visible layers.
+  size_t pointsDrawn() const;
+  // Clears the viewport and draws the visible layers in order, bottom first.
   void draw(const Camera& camera, int width, int height) const;
 
  private:
   std::unique_ptr<ShaderLibrary> shaders_;
   std::vector<std::unique_ptr<Layer>> layers_;
   Scene scene_;
+  Frame frame_;
 };
 
 }  // namespace hdprior::render

@@ -11,9 +11,10 @@ namespace hdprior::render {
 class GpuTexture;
 
 // The two ways layers draw: per-vertex coloured points/lines/triangles, and a texture on a quad.
+// Colours are multiplied by `tint` (RGBA) and the alpha by the layer's opacity.
 void drawColored(const DrawContext& context, const GpuMesh& mesh, Primitive primitive, float pointSize = 1.0f,
-                 bool roundPoints = false);
-// The texture's colour is multiplied by `tint` (RGBA).
+                 bool roundPoints = false, const Eigen::Vector4f& tint = Eigen::Vector4f::Ones(), size_t first = 0,
+                 size_t count = 0);
 void drawTextured(const DrawContext& context, const GpuMesh& quad, const GpuTexture& texture,
                   const Eigen::Vector4f& tint);
 
