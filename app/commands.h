@@ -9,5 +9,6 @@ namespace hdprior::app {
 int runInfo(const std::vector<std::string>& args);
 int runExportMap(const std::vector<std::string>& args);
 int runSnapshot(const std::vector<std::string>& args);
+int runView(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -19,6 +19,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"info", {hdprior::app::runInfo, "summarise an Argoverse 2 log: hdprior info LOG"}},
       {"export-map", {hdprior::app::runExportMap, "write the HD-map rasters as GeoTIFFs: hdprior export-map LOG --out DIR"}},
       {"snapshot", {hdprior::app::runSnapshot, "draw a frame headless to PNG: hdprior snapshot LOG --frame N --out FILE.png"}},
+      {"view", {hdprior::app::runView, "the desktop app: hdprior view [LOG] [--script FILE | --frames N --exit] [--screenshot FILE.png]"}},
   };
   return table;
 }

@@ -29,10 +29,14 @@ size_t Renderer::pointsDrawn() const {
   return n;
 }
 
-void Renderer::draw(const Camera& camera, int width, int height) const {
+void clearView(int width, int height) {
   glViewport(0, 0, width, height);
   glClearColor(0.08f, 0.09f, 0.11f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void Renderer::draw(const Camera& camera, int width, int height) const {
+  clearView(width, height);
   // Layers are composited in order (painter's algorithm): the map lies under the sweep
   // whatever the view, and translucent rasters blend predictably.
   glDisable(GL_DEPTH_TEST);

@@ -12,6 +12,9 @@ struct ShaderLibrary;
 
 // Draws a list of layers into the current GL context (an offscreen buffer or a window).
 // Create, use and destroy it with the same context current.
+// Clears the current context's viewport (0, 0, width, height) to the renderer's background.
+void clearView(int width, int height);
+
 class Renderer {
  public:
   Renderer();
