@@ -12,6 +12,16 @@
   X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                      \
   X(PFNGLATTACHSHADERPROC, glAttachShader)                        \
   X(PFNGLBINDBUFFERPROC, glBindBuffer)                            \
+  X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                  \
+  X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                \
+  X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)                  \
+  X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus)    \
+  X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)            \
+  X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)          \
+  X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)  \
+  X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                  \
+  X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                \
+  X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)          \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                          \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                  \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                              \

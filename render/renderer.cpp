@@ -10,17 +10,49 @@ Renderer::~Renderer() = default;
 
 void Renderer::addLayer(std::unique_ptr<Layer> layer) { layers_.push_back(std::move(layer)); }
 
+namespace {
+
+// FNV-1a over raw bytes.
+void mix(uint64_t& hash, const void* data, size_t size) {
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  for (size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * 1099511628211ull;
+}
+
+}  // namespace
+
+uint64_t Renderer::viewKey(const Camera& camera) {
+  uint64_t hash = 14695981039346656037ull;
+  const Eigen::Matrix4f vp = camera.viewProjection();
+  mix(hash, vp.data(), sizeof(float) * 16);
+  mix(hash, &generation_, sizeof generation_);
+  for (const auto& layer : layers_) {
+    mix(hash, &layer->visible, sizeof layer->visible);
+    mix(hash, &layer->opacity, sizeof layer->opacity);
+    for (const LayerOption& o : layer->options()) {
+      if (o.real) mix(hash, o.real, sizeof(float));
+      if (o.integer) mix(hash, o.integer, sizeof(int));
+      if (o.color) mix(hash, o.color->data(), sizeof(float) * 4);
+    }
+  }
+  return hash;
+}
+
 void Renderer::setScene(const Scene& scene) {
+  ++generation_;
   scene_ = scene;
   for (const auto& layer : layers_) layer->setScene(scene_);
 }
 
 void Renderer::setFrame(const Frame& frame) {
+  ++generation_;
   frame_ = frame;
   for (const auto& layer : layers_) layer->setFrame(scene_, frame_);
 }
 
-void Renderer::rebuild(Layer& layer) { layer.setFrame(scene_, frame_); }
+void Renderer::rebuild(Layer& layer) {
+  ++generation_;
+  layer.setFrame(scene_, frame_);
+}
 
 size_t Renderer::pointsDrawn() const {
   size_t n = 0;

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,9 @@ class Renderer {
   const Frame& frame() const { return frame_; }
   // Lidar points of the visible layers.
   size_t pointsDrawn() const;
+  // Changes whenever what draw(camera, ...) would show changes: the camera, the scene and frame
+  // data, each layer's visibility, opacity and option values (a cache key, see ViewCache).
+  uint64_t viewKey(const Camera& camera);
   // Clears the viewport and draws the visible layers in order, bottom first.
   void draw(const Camera& camera, int width, int height) const;
 
@@ -38,6 +42,7 @@ class Renderer {
   std::vector<std::unique_ptr<Layer>> layers_;
   Scene scene_;
   Frame frame_;
+  uint64_t generation_ = 0;  // counts data uploads (scene, frame, rebuilds)
 };
 
 }  // namespace hdprior::render

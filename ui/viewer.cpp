@@ -17,6 +17,7 @@
 #include "engine/map/hd_map.h"
 #include "render/png_writer.h"
 #include "render/renderer.h"
+#include "render/view_cache.h"
 #include "render/window_context.h"
 #include "ui/camera_input.h"
 #include "ui/panels/height_legend.h"
@@ -39,7 +40,8 @@ size_t speedIndex(const std::string& name) {
 Viewer::Viewer(const ViewerOptions& options)
     : options_(options),
       window_(std::make_unique<render::WindowContext>(options.width, options.height, "hdprior view")),
-      state_(std::make_unique<AppState>()) {
+      state_(std::make_unique<AppState>()),
+      viewCache_(std::make_unique<render::ViewCache>()) {
   window_->setSwapInterval(options.swapInterval);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -56,6 +58,7 @@ Viewer::Viewer(const ViewerOptions& options)
 Viewer::~Viewer() {
   if (loading_.valid()) loading_.wait();
   state_.reset();  // GL objects go while the context is alive
+  viewCache_.reset();
   if (imguiReady_) {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
@@ -176,7 +179,9 @@ void Viewer::frame() {
   ImGui::Render();
 
   if (state_->hasLog()) {
-    state_->renderer().draw(state_->camera.camera(double(w) / std::max(1, h)), w, h);
+    const render::Camera camera = state_->camera.camera(double(w) / std::max(1, h));
+    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) : ++uncachedFrames_;
+    viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h); });
   } else {
     render::clearView(w, h);
   }

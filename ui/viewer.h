@@ -10,6 +10,7 @@
 #include "ui/view_script.h"
 
 namespace hdprior::render {
+class ViewCache;
 class WindowContext;
 }
 
@@ -24,6 +25,7 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
+  bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)
 };
 
 // The `hdprior view` window: the 3-D view of the AppState's renderer under ImGui panels.
@@ -52,6 +54,8 @@ class Viewer {
   std::unique_ptr<render::WindowContext> window_;
   bool imguiReady_ = false;
   std::unique_ptr<AppState> state_;
+  std::unique_ptr<render::ViewCache> viewCache_;
+  uint64_t uncachedFrames_ = 0;
   std::future<LoadedLog> loading_;
   bool loadingFromOptions_ = false;
   std::string loadError_;
