@@ -39,6 +39,7 @@
   X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)            \
   X(PFNGLDISABLEPROC, glDisable)                                  \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                            \
+  X(PFNGLDRAWELEMENTSPROC, glDrawElements)                        \
   X(PFNGLENABLEPROC, glEnable)                                    \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray)  \
   X(PFNGLFINISHPROC, glFinish)                                    \

@@ -18,6 +18,7 @@ struct DrawContext {
   const ShaderLibrary& shaders;
   float pixelScale = 1.0f;  // image height / 720: point sizes scale with it
   float opacity = 1.0f;     // the drawn layer's opacity, multiplied into its colours
+  int pointStride = 1;      // lidar point layers draw every n-th point (a lighter draw while the camera moves)
 };
 
 // One drawable thing. GL resources are created in the calls below, with the context current.

@@ -67,7 +67,7 @@ void clearView(int width, int height) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-void Renderer::draw(const Camera& camera, int width, int height) const {
+void Renderer::draw(const Camera& camera, int width, int height, int pointStride) const {
   clearView(width, height);
   // Layers are composited in order (painter's algorithm): the map lies under the sweep
   // whatever the view, and translucent rasters blend predictably.
@@ -76,6 +76,7 @@ void Renderer::draw(const Camera& camera, int width, int height) const {
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_PROGRAM_POINT_SIZE);
   DrawContext context{camera.viewProjection(), *shaders_, float(height) / 720.0f};
+  context.pointStride = pointStride;
   for (const auto& layer : layers_) {
     if (!layer->visible) continue;
     context.opacity = layer->opacity;

@@ -35,7 +35,8 @@ class Renderer {
   // data, each layer's visibility, opacity and option values (a cache key, see ViewCache).
   uint64_t viewKey(const Camera& camera);
   // Clears the viewport and draws the visible layers in order, bottom first.
-  void draw(const Camera& camera, int width, int height) const;
+  // pointStride > 1: lidar point layers draw every n-th point.
+  void draw(const Camera& camera, int width, int height, int pointStride = 1) const;
 
  private:
   std::unique_ptr<ShaderLibrary> shaders_;

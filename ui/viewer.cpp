@@ -180,8 +180,16 @@ void Viewer::frame() {
 
   if (state_->hasLog()) {
     const render::Camera camera = state_->camera.camera(double(w) / std::max(1, h));
-    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) : ++uncachedFrames_;
-    viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h); });
+    // While the camera moves, point layers draw a uniform subset; the first still frame draws all.
+    const Eigen::Matrix4f viewProjection = camera.viewProjection();
+    const bool moving = viewProjection != lastViewProjection_;
+    lastViewProjection_ = viewProjection;
+    const size_t points = state_->renderer().pointsDrawn();
+    const int stride = moving && options_.interactivePoints > 0
+                           ? int(std::max<size_t>(1, (points + options_.interactivePoints - 1) / options_.interactivePoints))
+                           : 1;
+    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
+    viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h, stride); });
   } else {
     render::clearView(w, h);
   }

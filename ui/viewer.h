@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "ui/app_state.h"
 #include "ui/view_script.h"
 
@@ -26,6 +28,8 @@ struct ViewerOptions {
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
   bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)
+  // While the camera moves, lidar layers draw about this many points (0: all, always).
+  size_t interactivePoints = 100000;
 };
 
 // The `hdprior view` window: the 3-D view of the AppState's renderer under ImGui panels.
@@ -56,6 +60,7 @@ class Viewer {
   std::unique_ptr<AppState> state_;
   std::unique_ptr<render::ViewCache> viewCache_;
   uint64_t uncachedFrames_ = 0;
+  Eigen::Matrix4f lastViewProjection_ = Eigen::Matrix4f::Zero();
   std::future<LoadedLog> loading_;
   bool loadingFromOptions_ = false;
   std::string loadError_;

@@ -33,7 +33,7 @@ void AccumulatedSweepsLayer::setFrame(const Scene& scene, const Frame& frame) {
 }
 
 void AccumulatedSweepsLayer::draw(const DrawContext& context) const {
-  if (points_) drawColored(context, *points_, Primitive::Points, pointSize_);
+  if (points_) drawLidarPoints(context, *points_, pointSize_);
 }
 
 std::vector<LayerOption> AccumulatedSweepsLayer::options() {

@@ -1,5 +1,7 @@
 #include "render/layers/layer_drawing.h"
 
+#include <algorithm>
+
 #include "render/gl.h"
 #include "render/gpu_texture.h"
 #include "render/shader_program.h"
@@ -24,6 +26,16 @@ void drawColored(const DrawContext& context, const GpuMesh& mesh, Primitive prim
   program.set("roundPoints", roundPoints ? 1 : 0);
   program.set("tint", withOpacity(tint, context.opacity));
   mesh.draw(primitive, first, count);
+}
+
+void drawLidarPoints(const DrawContext& context, const GpuMesh& mesh, float pointSize) {
+  const ShaderProgram& program = context.shaders.colored;
+  program.use();
+  program.set("viewProjection", context.viewProjection);
+  program.set("pointSize", pointSize * context.pixelScale);
+  program.set("roundPoints", 0);
+  program.set("tint", withOpacity(Eigen::Vector4f::Ones(), context.opacity));
+  mesh.drawStrided(Primitive::Points, size_t(std::max(1, context.pointStride)));
 }
 
 void drawTextured(const DrawContext& context, const GpuMesh& quad, const GpuTexture& texture,

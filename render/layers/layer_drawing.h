@@ -18,6 +18,9 @@ void drawColored(const DrawContext& context, const GpuMesh& mesh, Primitive prim
 void drawTextured(const DrawContext& context, const GpuMesh& quad, const GpuTexture& texture,
                   const Eigen::Vector4f& tint);
 
+// Lidar points: every context.pointStride-th vertex of the mesh.
+void drawLidarPoints(const DrawContext& context, const GpuMesh& mesh, float pointSize);
+
 // A quad (two triangles) from four corners given counter-clockwise starting at uv (0, 0).
 std::array<TexturedVertex, 6> texturedQuad(const std::array<Eigen::Vector3f, 4>& corners);
 

@@ -18,7 +18,7 @@ void LidarSweepLayer::setFrame(const Scene& scene, const Frame& frame) {
 }
 
 void LidarSweepLayer::draw(const DrawContext& context) const {
-  if (points_) drawColored(context, *points_, Primitive::Points, pointSize_);
+  if (points_) drawLidarPoints(context, *points_, pointSize_);
 }
 
 std::vector<LayerOption> LidarSweepLayer::options() {
