@@ -53,8 +53,7 @@ int runView(const std::vector<std::string>& args) {
   } else {
     options.log = bundledDemoLog();
   }
-  if (!options.log && (options.scripted || options.frames > 0))
-    throw Error("option LOG", "--script and --frames need a log (no demo log is bundled)");
+  if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (no demo log is bundled)");
   return ui::runViewer(options);
 }
 

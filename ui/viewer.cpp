@@ -195,7 +195,8 @@ void Viewer::frame() {
   }
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-  if (state_->hasLog() && ++framesWithLog_ == options_.frames) {
+  // Frames count once the log is open (or from the start when there is none: the open-log panel).
+  if ((state_->hasLog() || !options_.log) && ++framesWithLog_ == options_.frames) {
     if (options_.screenshot) screenshotAfterDraw_ = options_.screenshot;
     exitAfterDraw_ = exitAfterDraw_ || options_.exitAfterFrames;
   }

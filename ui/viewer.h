@@ -22,7 +22,7 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> log;  // none: ask for a directory
   std::vector<ScriptCommand> script;         // run once the log is open; the app exits at its end
   bool scripted = false;
-  int frames = 0;           // > 0: after this many frames with the log open, screenshot and/or exit
+  int frames = 0;  // > 0: after this many frames with the log open (or without a log), screenshot and/or exit
   bool exitAfterFrames = false;
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
   int width = 1280, height = 800;

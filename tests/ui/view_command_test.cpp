@@ -123,6 +123,21 @@ TEST(ViewCommand, FramesAndExitTakesAScreenshot) {
   EXPECT_GT(measure(image).distinctColors, 2000u);
 }
 
+// Without a log (and no demo log bundled) the app asks for a directory.
+TEST(ViewCommand, WithoutALogShowsTheOpenLogPanel) {
+  const fs::path dir = freshOutputDir("view_no_log");
+  const fs::path shot = dir / "shot.png";
+  const CommandResult r = runWithDisplay("view --frames 3 --exit --screenshot " + quoted(shot), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = readPng(shot);
+  // The panel: its title bar, frame and white text in the middle of an otherwise empty window.
+  size_t text = 0;
+  for (int y = image.height / 2 - 60; y < image.height / 2 + 60; ++y)
+    for (int x = image.width / 2 - 300; x < image.width / 2 + 300; ++x)
+      if (image.pixel(x, y)[0] > 200 && image.pixel(x, y)[1] > 200 && image.pixel(x, y)[2] > 200) ++text;
+  EXPECT_GT(text, 300u);
+}
+
 struct BadViewInput {
   const char* name;
   std::string args;
@@ -136,6 +151,7 @@ class ViewCommandBadInput : public ::testing::TestWithParam<BadViewInput> {};
 TEST_P(ViewCommandBadInput, FailsWithOneLine) {
   const fs::path dir = freshOutputDir(std::string("view_bad_") + GetParam().name);
   writeText(dir / "bad_script.txt", "wait 1\nfly away\n");
+  writeText(dir / "good_script.txt", "wait 1\n");
   std::string args = GetParam().args;
   for (const auto& [key, value] : {std::pair<std::string, std::string>{"LOG", quoted(sharedLog())},
                                    {"DIR", dir.string()}}) {
@@ -157,7 +173,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadViewInput{"screenshot_folder", "LOG --frames 1 --exit --screenshot DIR/no/x.png",
                                    "folder does not exist"},
                       BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"},
-                      BadViewInput{"scripted_without_log", "--frames 1 --exit", "need a log"}),
+                      BadViewInput{"scripted_without_log", "--script DIR/good_script.txt", "needs a log"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Without an X server the window cannot open: one line naming GLFW, never a crash.
