@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include <exception>
+
 #include "render/gl.h"
 #include "render/shader_program.h"
 
@@ -46,7 +48,17 @@ void Renderer::setScene(const Scene& scene) {
 void Renderer::setFrame(const Frame& frame) {
   ++generation_;
   frame_ = frame;
-  for (const auto& layer : layers_) layer->setFrame(scene_, frame_);
+  // One layer's failure (an unreadable neighbouring sweep) leaves the others up to date; the
+  // first error is reported once all have run.
+  std::exception_ptr first;
+  for (const auto& layer : layers_) {
+    try {
+      layer->setFrame(scene_, frame_);
+    } catch (...) {
+      if (!first) first = std::current_exception();
+    }
+  }
+  if (first) std::rethrow_exception(first);
 }
 
 void Renderer::rebuild(Layer& layer) {

@@ -25,7 +25,8 @@ class Renderer {
   const std::vector<std::unique_ptr<Layer>>& layers() const { return layers_; }
 
   void setScene(const Scene& scene);  // uploads static data of every layer
-  void setFrame(const Frame& frame);  // uploads per-frame data
+  // Uploads per-frame data; if a layer throws, the others still update and the first error is rethrown.
+  void setFrame(const Frame& frame);
   // Builds one layer's per-frame data again after an option that `rebuilds` changed.
   void rebuild(Layer& layer);
   const Frame& frame() const { return frame_; }

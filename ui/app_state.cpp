@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
 #include "render/layer_registry.h"
@@ -31,8 +32,13 @@ void AppState::open(LoadedLog loaded) {
   if (loaded_.map->hasGroundHeight()) groundColorRange_ = render::groundHeightColorRange(loaded_.map->groundHeight());
   playback = Playback{};
   camera = ViewCamera{};
+  error.reset();
   if (frameCount() > 0) {
-    renderer_->setFrame(render::makeFrame(scene_, 0));
+    try {
+      renderer_->setFrame(render::makeFrame(scene_, 0));
+    } catch (const Error& e) {
+      error = e;
+    }
     const Eigen::Vector3d forward = frame().cityTEgo.linear().col(0);
     camera.yaw = std::atan2(forward.y(), forward.x());
     camera.follow(frame().cityTEgo.translation() - scene_.origin);
@@ -45,7 +51,14 @@ void AppState::goToFrame(long long index) {
   if (frameCount() == 0) return;
   const size_t clamped = size_t(std::clamp<long long>(index, 0, (long long)frameCount() - 1));
   if (clamped == frame().index && frame().sweep) return;
-  renderer_->setFrame(render::makeFrame(scene_, clamped));
+  try {
+    renderer_->setFrame(render::makeFrame(scene_, clamped));
+  } catch (const Error& e) {
+    error = e;
+    playback.playing = false;
+    return;
+  }
+  error.reset();
   camera.follow(frame().cityTEgo.translation() - scene_.origin);
 }
 

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/error.h"
 #include "render/layers/ground_height_layer.h"
 #include "render/renderer.h"
 #include "render/scene.h"
@@ -41,14 +42,16 @@ class AppState {
   AppState();
   ~AppState();
 
-  // Takes a loaded log: builds the scene and the layers, shows frame 0.
+  // Takes a loaded log: builds the scene and the layers, shows frame 0 (or sets `error`).
   void open(LoadedLog loaded);
   bool hasLog() const { return loaded_.log != nullptr; }
   const ArgoverseLog& log() const { return *loaded_.log; }
   const render::Scene& scene() const { return scene_; }
   const render::Frame& frame() const { return renderer_->frame(); }
   size_t frameCount() const;
-  // Clamped to the log; loads the sweep and uploads per-frame data only when it changes.
+  // Clamped to the log; loads the sweep and uploads per-frame data only when it changes. A
+  // frame that cannot be loaded (a corrupt sweep file) stops playback and sets `error`; the
+  // current frame stays.
   void goToFrame(long long index);
   void step(long long frames) { goToFrame((long long)frame().index + frames); }
 
@@ -60,6 +63,7 @@ class AppState {
   Playback playback;
   ViewCamera camera;
   std::optional<GroundCursor> cursor;
+  std::optional<Error> error;  // the last frame that failed to load, shown in the status bar
 
  private:
   LoadedLog loaded_;

@@ -92,6 +92,7 @@ void Viewer::waitForLog() {
 // Runs script commands until one needs a drawn frame (wait, screenshot) or the script ends.
 void Viewer::runScript() {
   if (!options_.scripted || !state_->hasLog()) return;
+  if (state_->error) throw *state_->error;  // a script stops at a frame that cannot be loaded
   if (waitFrames_ > 0) {
     --waitFrames_;
     return;
@@ -120,6 +121,7 @@ void Viewer::runScript() {
       exitAfterDraw_ = true;
       return;
     }
+    if (state_->error) throw *state_->error;  // a script stops at a frame that cannot be loaded
   }
   // The end of the script: the final screenshot, then exit.
   if (options_.screenshot) screenshotAfterDraw_ = options_.screenshot;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "render/image_compare.h"
 #include "test_data.h"
@@ -136,6 +137,28 @@ TEST(ViewCommand, WithoutALogShowsTheOpenLogPanel) {
     for (int x = image.width / 2 - 300; x < image.width / 2 + 300; ++x)
       if (image.pixel(x, y)[0] > 200 && image.pixel(x, y)[1] > 200 && image.pixel(x, y)[2] > 200) ++text;
   EXPECT_GT(text, 300u);
+}
+
+// A corrupt sweep met on the way: the scripted run stops with one line naming the file.
+TEST(ViewCommand, ScriptStopsAtACorruptSweep) {
+  const fs::path dir = freshOutputDir("view_corrupt_sweep");
+  const fs::path log = dir / "log";
+  fs::create_directories(log / "sensors" / "lidar");
+  for (const char* entry : {"map", "calibration", "city_SE3_egovehicle.feather"})
+    fs::create_symlink(fs::absolute(sharedLog() / entry), log / entry);
+  std::vector<fs::path> sweeps;
+  for (const auto& e : fs::directory_iterator(sharedLog() / "sensors" / "lidar")) sweeps.push_back(e.path());
+  std::sort(sweeps.begin(), sweeps.end());
+  fs::copy_file(sweeps[0], log / "sensors" / "lidar" / sweeps[0].filename());
+  writeText(log / "sensors" / "lidar" / sweeps[1].filename(), "not a feather file");
+  writeText(dir / "script.txt", "wait 1\nstep 1\nwait 1\n");
+  const fs::path shot = dir / "shot.png";
+  const CommandResult r =
+      runWithDisplay("view " + quoted(log) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(shot), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(sweeps[1].filename().string()), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(shot));
 }
 
 struct BadViewInput {

@@ -21,6 +21,11 @@ void drawStatusBar(AppState& state) {
   ImGui::Text("%5.1f FPS  |  %zu points  |  ego x %.2f  y %.2f  z %.2f  yaw %.1f deg", io.Framerate,
               state.renderer().pointsDrawn(), t.x(), t.y(), t.z(), yawDeg);
   ImGui::SameLine();
+  if (state.error) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "  |  %s", state.error->what());
+    ImGui::End();
+    return;
+  }
   if (state.cursor) {
     const GroundCursor& c = *state.cursor;
     if (std::isfinite(c.groundHeight))
