@@ -12,5 +12,6 @@ int runSnapshot(const std::vector<std::string>& args);
 int runRun(const std::vector<std::string>& args);
 int runSim(const std::vector<std::string>& args);
 int runMatch(const std::vector<std::string>& args);
+int runView(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -22,6 +22,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"run", {hdprior::app::runRun, "lidar odometry + evaluation: hdprior run LOG --out DIR --no-prior [--config FILE]"}},
       {"sim", {hdprior::app::runSim, "simulate an Argoverse 2 log: hdprior sim (--town SEED | --map LOG) --out DIR"}},
       {"match", {hdprior::app::runMatch, "match a frame's road points to the map: hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl]"}},
+      {"view", {hdprior::app::runView, "the desktop app: hdprior view [LOG] [--script FILE | --frames N --exit] [--screenshot FILE.png]"}},
   };
   return table;
 }

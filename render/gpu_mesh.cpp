@@ -1,6 +1,7 @@
 #include "render/gpu_mesh.h"
 
 #include <cstdint>
+#include <vector>
 
 #include "render/gl.h"
 
@@ -33,6 +34,7 @@ GpuMesh::GpuMesh() {
 }
 
 GpuMesh::~GpuMesh() {
+  if (ebo_) glDeleteBuffers(1, &ebo_);
   glDeleteBuffers(1, &vbo_);
   glDeleteVertexArrays(1, &vao_);
 }
@@ -53,6 +55,23 @@ void GpuMesh::upload(std::span<const TexturedVertex> vertices) {
   attribute(0, 3, sizeof(TexturedVertex), offsetof(TexturedVertex, position));
   attribute(1, 2, sizeof(TexturedVertex), offsetof(TexturedVertex, uv));
   count_ = vertices.size();
+}
+
+void GpuMesh::drawStrided(Primitive primitive, size_t stride) const {
+  if (stride <= 1) return draw(primitive);
+  const size_t n = (count_ + stride - 1) / stride;
+  if (n == 0) return;
+  glBindVertexArray(vao_);
+  if (!ebo_) glGenBuffers(1, &ebo_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);  // recorded in the vertex array
+  if (eboStride_ != stride || eboCount_ != count_) {
+    std::vector<uint32_t> indices(n);
+    for (size_t i = 0; i < n; ++i) indices[i] = uint32_t(i * stride);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(n * sizeof(uint32_t)), indices.data(), GL_STATIC_DRAW);
+    eboStride_ = stride;
+    eboCount_ = count_;
+  }
+  glDrawElements(glPrimitive(primitive), GLsizei(n), GL_UNSIGNED_INT, nullptr);
 }
 
 void GpuMesh::draw(Primitive primitive, size_t first, size_t count) const {

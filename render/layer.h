@@ -1,7 +1,11 @@
 #pragma once
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
+
+#include "render/layer_option.h"
 
 namespace hdprior::render {
 
@@ -13,10 +17,13 @@ struct DrawContext {
   Eigen::Matrix4f viewProjection;
   const ShaderLibrary& shaders;
   float pixelScale = 1.0f;  // image height / 720: point sizes scale with it
+  float opacity = 1.0f;     // the drawn layer's opacity, multiplied into its colours
+  int pointStride = 1;      // lidar point layers draw every n-th point (a lighter draw while the camera moves)
 };
 
 // One drawable thing. GL resources are created in the calls below, with the context current.
-// A new layer is one class in render/layers/ plus one line in layer_registry.cpp.
+// A new layer is one class in render/layers/ plus one line in layer_registry.cpp; its
+// options() appear in the app's layers panel without any UI code.
 class Layer {
  public:
   virtual ~Layer() = default;
@@ -26,6 +33,13 @@ class Layer {
   // On every frame change, for per-frame data (the sweep, the ego pose).
   virtual void setFrame(const Scene& scene, const Frame& frame) {}
   virtual void draw(const DrawContext& context) const = 0;
+  // The controls beyond visibility and opacity (colours, colouring, point size, ...).
+  virtual std::vector<LayerOption> options() { return {}; }
+  // Lidar points this layer draws (the status bar's count).
+  virtual size_t pointCount() const { return 0; }
+
+  bool visible = true;
+  float opacity = 1.0f;
 };
 
 }  // namespace hdprior::render

@@ -5,30 +5,37 @@
 #include <utility>
 
 #include "engine/error.h"
+#include "render/layers/accumulated_sweeps_layer.h"
 #include "render/layers/drivable_boundary_layer.h"
 #include "render/layers/drivable_raster_layer.h"
 #include "render/layers/ego_pose_layer.h"
 #include "render/layers/ground_height_layer.h"
 #include "render/layers/lane_centerline_layer.h"
 #include "render/layers/lidar_sweep_layer.h"
+#include "render/layers/pedestrian_crossing_layer.h"
 #include "render/layers/trajectory_layer.h"
 
 namespace hdprior::render {
 namespace {
 
 using Factory = std::function<std::unique_ptr<Layer>()>;
+struct Entry {
+  std::string name;
+  Factory factory;
+  bool standard;  // part of "all"
+};
 
 template <typename T>
-std::pair<std::string, Factory> entry() {
-  return {T::kName, [] { return std::make_unique<T>(); }};
+Entry entry(bool standard = true) {
+  return {T::kName, [] { return std::make_unique<T>(); }, standard};
 }
 
 // Drawing order: bottom first.
-const std::vector<std::pair<std::string, Factory>>& registry() {
-  static const std::vector<std::pair<std::string, Factory>> layers = {
-      entry<GroundHeightLayer>(),   entry<DrivableRasterLayer>(), entry<DrivableBoundaryLayer>(),
-      entry<LaneCenterlineLayer>(), entry<TrajectoryLayer>(),     entry<LidarSweepLayer>(),
-      entry<EgoPoseLayer>(),
+const std::vector<Entry>& registry() {
+  static const std::vector<Entry> layers = {
+      entry<GroundHeightLayer>(),   entry<DrivableRasterLayer>(),  entry<DrivableBoundaryLayer>(),
+      entry<LaneCenterlineLayer>(), entry<PedestrianCrossingLayer>(false), entry<TrajectoryLayer>(),
+      entry<AccumulatedSweepsLayer>(false), entry<LidarSweepLayer>(), entry<EgoPoseLayer>(),
   };
   return layers;
 }
@@ -44,20 +51,30 @@ std::string joined() {
 const std::vector<std::string>& layerNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
-    for (const auto& [name, factory] : registry()) n.push_back(name);
+    for (const Entry& e : registry()) n.push_back(e.name);
+    return n;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& standardLayerNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const Entry& e : registry())
+      if (e.standard) n.push_back(e.name);
     return n;
   }();
   return names;
 }
 
 std::unique_ptr<Layer> makeLayer(const std::string& name) {
-  for (const auto& [n, factory] : registry())
-    if (n == name) return factory();
+  for (const Entry& e : registry())
+    if (e.name == name) return e.factory();
   throw Error("layer " + name, "unknown layer (known: " + joined() + ")");
 }
 
 std::vector<std::string> parseLayerList(const std::string& list) {
-  if (list == "all") return layerNames();
+  if (list == "all") return standardLayerNames();
   std::vector<std::string> wanted;
   for (size_t begin = 0, end = 0; end != std::string::npos; begin = end + 1) {
     end = list.find(',', begin);

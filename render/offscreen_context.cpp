@@ -2,12 +2,12 @@
 
 #include <GL/osmesa.h>
 
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "engine/error.h"
-#include "render/gl.h"
+#include "render/framebuffer_readback.h"
+#include "render/gl_loader.h"
 
 namespace hdprior::render {
 
@@ -26,6 +26,7 @@ OffscreenContext::OffscreenContext(int width, int height)
   if (!state_->context) throw Error("OSMesa", "cannot create an OpenGL 3.3 core-profile context");
   state_->buffer.resize(size_t(width) * size_t(height) * 4);
   makeCurrent();
+  loadGlFunctions(OSMesaGetProcAddress, "OSMesa");
 }
 
 OffscreenContext::~OffscreenContext() {
@@ -37,22 +38,6 @@ void OffscreenContext::makeCurrent() {
     throw Error("OSMesa", "cannot make the offscreen context current");
 }
 
-Image OffscreenContext::readPixels() const {
-  Image image{width_, height_, std::vector<uint8_t>(size_t(width_) * size_t(height_) * 4)};
-  glFinish();
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  // GL rows run bottom to top; images (and PNG) top to bottom.
-  const size_t stride = size_t(width_) * 4;
-  std::vector<uint8_t> row(stride);
-  for (int y = 0; y < height_ / 2; ++y) {
-    uint8_t* a = image.rgba.data() + size_t(y) * stride;
-    uint8_t* b = image.rgba.data() + size_t(height_ - 1 - y) * stride;
-    std::memcpy(row.data(), a, stride);
-    std::memcpy(a, b, stride);
-    std::memcpy(b, row.data(), stride);
-  }
-  return image;
-}
+Image OffscreenContext::readPixels() const { return readFramebuffer(width_, height_); }
 
 }  // namespace hdprior::render

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,9 @@ struct ShaderLibrary;
 
 // Draws a list of layers into the current GL context (an offscreen buffer or a window).
 // Create, use and destroy it with the same context current.
+// Clears the current context's viewport (0, 0, width, height) to the renderer's background.
+void clearView(int width, int height);
+
 class Renderer {
  public:
   Renderer();
@@ -21,14 +25,26 @@ class Renderer {
   const std::vector<std::unique_ptr<Layer>>& layers() const { return layers_; }
 
   void setScene(const Scene& scene);  // uploads static data of every layer
-  void setFrame(const Frame& frame);  // uploads per-frame data
-  // Clears the viewport and draws the layers in order, bottom first.
-  void draw(const Camera& camera, int width, int height) const;
+  // Uploads per-frame data; if a layer throws, the others still update and the first error is rethrown.
+  void setFrame(const Frame& frame);
+  // Builds one layer's per-frame data again after an option that `rebuilds` changed.
+  void rebuild(Layer& layer);
+  const Frame& frame() const { return frame_; }
+  // Lidar points of the visible layers.
+  size_t pointsDrawn() const;
+  // Changes whenever what draw(camera, ...) would show changes: the camera, the scene and frame
+  // data, each layer's visibility, opacity and option values (a cache key, see ViewCache).
+  uint64_t viewKey(const Camera& camera);
+  // Clears the viewport and draws the visible layers in order, bottom first.
+  // pointStride > 1: lidar point layers draw every n-th point.
+  void draw(const Camera& camera, int width, int height, int pointStride = 1) const;
 
  private:
   std::unique_ptr<ShaderLibrary> shaders_;
   std::vector<std::unique_ptr<Layer>> layers_;
   Scene scene_;
+  Frame frame_;
+  uint64_t generation_ = 0;  // counts data uploads (scene, frame, rebuilds)
 };
 
 }  // namespace hdprior::render

@@ -57,7 +57,7 @@ struct Snapshotter::State {
 Snapshotter::Snapshotter(const ArgoverseLog& log, const HdMap& map, const SnapshotOptions& options)
     : state_(std::make_unique<State>(options, log, map)) {
   state_->renderer.emplace();
-  for (const auto& name : options.layers.empty() ? layerNames() : options.layers)
+  for (const auto& name : options.layers.empty() ? standardLayerNames() : options.layers)
     state_->renderer->addLayer(makeLayer(name));
   state_->renderer->setScene(state_->scene);
 }

@@ -9,7 +9,7 @@ packages=(
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev libstb-dev
   nlohmann-json3-dev liblz4-dev libzstd-dev
   libgtest-dev libbenchmark-dev libboost-dev
-  xvfb clang libclang-rt-14-dev
+  xvfb xauth clang libclang-rt-14-dev
 )
 
 missing=()

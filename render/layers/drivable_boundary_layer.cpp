@@ -16,14 +16,18 @@ void DrivableBoundaryLayer::setScene(const Scene& scene) {
   for (const Eigen::Vector2d& p : map.drivable().boundaryPoints()) {
     const double h = map.hasGroundHeight() ? map.groundHeight().bilinearAt(p) : NAN;
     const double z = std::isfinite(h) ? h : scene.origin.z();
-    vertices.push_back({scene.local({p.x(), p.y(), z}), {1.0f, 0.72f, 0.10f, 1.0f}});
+    vertices.push_back({scene.local({p.x(), p.y(), z}), {1.0f, 1.0f, 1.0f, 1.0f}});
   }
   points_ = std::make_unique<GpuMesh>();
   points_->upload(std::span<const ColoredVertex>(vertices));
 }
 
 void DrivableBoundaryLayer::draw(const DrawContext& context) const {
-  drawColored(context, *points_, Primitive::Points, 2.0f);
+  drawColored(context, *points_, Primitive::Points, pointSize_, false, color_);
+}
+
+std::vector<LayerOption> DrivableBoundaryLayer::options() {
+  return {LayerOption::colorPicker("colour", &color_), LayerOption::slider("point size", &pointSize_, 1.0f, 6.0f)};
 }
 
 }  // namespace hdprior::render

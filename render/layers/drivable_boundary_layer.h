@@ -13,9 +13,12 @@ class DrivableBoundaryLayer : public Layer {
   std::string name() const override { return kName; }
   void setScene(const Scene& scene) override;
   void draw(const DrawContext& context) const override;
+  std::vector<LayerOption> options() override;
 
  private:
   std::unique_ptr<GpuMesh> points_;
+  Eigen::Vector4f color_{1.0f, 0.72f, 0.10f, 1.0f};
+  float pointSize_ = 2.0f;
 };
 
 }  // namespace hdprior::render

@@ -28,6 +28,8 @@ void DrivableRasterLayer::setFrame(const Scene& scene, const Frame& frame) {
   quad_->upload(std::span<const TexturedVertex>(vertices));
 }
 
-void DrivableRasterLayer::draw(const DrawContext& context) const { drawTextured(context, *quad_, *texture_, {0.59f, 0.63f, 0.69f, 0.45f}); }
+void DrivableRasterLayer::draw(const DrawContext& context) const { drawTextured(context, *quad_, *texture_, color_); }
+
+std::vector<LayerOption> DrivableRasterLayer::options() { return {LayerOption::colorPicker("colour", &color_)}; }
 
 }  // namespace hdprior::render

@@ -15,10 +15,12 @@ class DrivableRasterLayer : public Layer {
   void setScene(const Scene& scene) override;
   void setFrame(const Scene& scene, const Frame& frame) override;
   void draw(const DrawContext& context) const override;
+  std::vector<LayerOption> options() override;
 
  private:
   std::unique_ptr<GpuTexture> texture_;
   std::unique_ptr<GpuMesh> quad_;
+  Eigen::Vector4f color_{0.59f, 0.63f, 0.69f, 0.45f};
 };
 
 }  // namespace hdprior::render

@@ -13,9 +13,11 @@ class EgoPoseLayer : public Layer {
   std::string name() const override { return kName; }
   void setFrame(const Scene& scene, const Frame& frame) override;
   void draw(const DrawContext& context) const override;
+  std::vector<LayerOption> options() override;
 
  private:
   std::unique_ptr<GpuMesh> triangles_;
+  Eigen::Vector4f bodyColor_{0.95f, 0.15f, 0.15f, 0.75f};
 };
 
 }  // namespace hdprior::render

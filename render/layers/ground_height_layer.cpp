@@ -11,15 +11,22 @@
 
 namespace hdprior::render {
 
-void GroundHeightLayer::setScene(const Scene& scene) {
-  if (!scene.map->hasGroundHeight()) return;
-  const GroundHeight& g = scene.map->groundHeight();
+std::optional<HeightRange> groundHeightColorRange(const GroundHeight& g) {
   std::vector<float> valid;
   for (float h : g.heights())
     if (std::isfinite(h)) valid.push_back(h);
-  if (valid.empty()) return;
+  if (valid.empty()) return std::nullopt;
   std::sort(valid.begin(), valid.end());
   const float lo = valid[valid.size() * 2 / 100], hi = std::max(valid[valid.size() * 98 / 100], lo + 0.1f);
+  return HeightRange{lo, hi};
+}
+
+void GroundHeightLayer::setScene(const Scene& scene) {
+  if (!scene.map->hasGroundHeight()) return;
+  const GroundHeight& g = scene.map->groundHeight();
+  const std::optional<HeightRange> range = groundHeightColorRange(g);
+  if (!range) return;
+  const float lo = range->low, hi = range->high;
 
   std::vector<uint8_t> rgba(g.heights().size() * 4, 0);
   for (size_t i = 0; i < g.heights().size(); ++i) {

@@ -13,9 +13,11 @@ class TrajectoryLayer : public Layer {
   std::string name() const override { return kName; }
   void setScene(const Scene& scene) override;
   void draw(const DrawContext& context) const override;
+  std::vector<LayerOption> options() override;
 
  private:
   std::unique_ptr<GpuMesh> line_;
+  Eigen::Vector4f color_{0.15f, 0.95f, 0.35f, 1.0f};
 };
 
 }  // namespace hdprior::render

@@ -53,7 +53,10 @@ TEST(SnapshotOptions, ParsesSizesViewsAndLayers) {
   EXPECT_THROW(render::parseView("Top"), Error);
   // Drawing order, not the order given.
   EXPECT_EQ(render::parseLayerList("ego,sweep,ground"), (std::vector<std::string>{"ground", "sweep", "ego"}));
-  EXPECT_EQ(render::parseLayerList("all"), render::layerNames());
+  // "all" is the standard layers; the extras are drawn when named.
+  EXPECT_EQ(render::parseLayerList("all"),
+            (std::vector<std::string>{"ground", "drivable", "boundary", "lanes", "trajectory", "sweep", "ego"}));
+  EXPECT_EQ(render::parseLayerList("accumulated,crossings"), (std::vector<std::string>{"crossings", "accumulated"}));
   EXPECT_THROW(render::parseLayerList("sweep,"), Error);
   EXPECT_THROW(render::parseLayerList("clouds"), Error);
   for (const auto& name : render::layerNames()) EXPECT_EQ(render::makeLayer(name)->name(), name);

@@ -1,0 +1,60 @@
+#include <filesystem>
+#include <optional>
+
+#include "app/command_line.h"
+#include "app/commands.h"
+#include "engine/error.h"
+#include "render/snapshot.h"
+#include "ui/viewer.h"
+
+namespace hdprior::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The log `hdprior view` opens without a LOG argument. The hook for the bundled demo log: none
+// is bundled yet, so the app asks for a directory.
+std::optional<fs::path> bundledDemoLog() { return std::nullopt; }
+
+void checkPngPath(const fs::path& out) {
+  const fs::path dir = out.parent_path().empty() ? "." : out.parent_path();
+  if (!fs::is_directory(dir)) throw Error(out.string(), "its folder does not exist");
+  if (fs::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
+}
+
+}  // namespace
+
+int runView(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size"}, .flags = {"exit"},
+                              .minPositional = 0, .maxPositional = 1,
+                              .usage = "hdprior view [LOG] [--script FILE | --frames N --exit] "
+                                       "[--screenshot FILE.png] [--size 1280x800]"});
+  ui::ViewerOptions options;
+  render::parseSize(cl.value("size").value_or("1280x800"), options.width, options.height);
+  if (cl.has("script") && (cl.has("frames") || cl.has("exit")))
+    throw Error("option --script", "cannot be combined with --frames or --exit");
+  if (const auto script = cl.value("script")) {
+    options.script = ui::readViewScript(*script);
+    options.scripted = true;
+  }
+  if (cl.has("frames") || cl.has("exit")) {
+    options.frames = int(cl.integer("frames", 1));
+    if (options.frames < 1) throw Error("option --frames", "must be at least 1");
+    options.exitAfterFrames = cl.has("exit");
+  }
+  if (const auto screenshot = cl.value("screenshot")) {
+    checkPngPath(*screenshot);
+    options.screenshot = fs::path(*screenshot);
+    if (!options.scripted && options.frames == 0) throw Error("option --screenshot", "needs --script or --frames");
+  }
+  if (!cl.positional().empty()) {
+    options.log = fs::path(cl.positional()[0]);
+    if (!fs::is_directory(*options.log)) throw Error(options.log->string(), "is not a log directory");
+  } else {
+    options.log = bundledDemoLog();
+  }
+  if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (no demo log is bundled)");
+  return ui::runViewer(options);
+}
+
+}  // namespace hdprior::app

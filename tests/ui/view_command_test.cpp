@@ -1,0 +1,212 @@
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/image_compare.h"
+#include "test_data.h"
+
+namespace hdprior::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& p) {
+  std::string s = "'";
+  s += p.string();
+  s += "'";
+  return s;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does.
+CommandResult runWithDisplay(const std::string& args, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1280x800x24' '" + std::string(HDPRIOR_BINARY) + "' " + args +
+                          " >" + quoted(out) + " 2>" + quoted(err);
+  const int raw = std::system(cmd.c_str());
+  CommandResult r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+struct Content {
+  size_t distinctColors = 0;
+  double drivableGrey = 0;   // the drivable raster over the ground: light blue-grey
+  double lidarColors = 0;    // saturated Turbo colours of the sweep points
+  size_t checkMarks = 0;     // ImGui's checkbox ticks (layer list) in the left panel
+  size_t statusText = 0;     // white text pixels in the status bar (bottom 26 rows)
+};
+
+Content measure(const render::Image& image) {
+  Content c;
+  std::set<uint32_t> colors;
+  size_t grey = 0, lidar = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.pixel(x, y);
+      const int r = p[0], g = p[1], b = p[2];
+      colors.insert(uint32_t(r) << 16 | uint32_t(g) << 8 | uint32_t(b));
+      const int hi = std::max({r, g, b}), lo = std::min({r, g, b});
+      if (lo >= 110 && hi <= 215 && hi - lo <= 30 && b >= r) ++grey;
+      if (hi - lo >= 140) ++lidar;
+      if (x < 300 && std::abs(r - 66) <= 6 && std::abs(g - 150) <= 6 && std::abs(b - 250) <= 6) ++c.checkMarks;
+      if (y >= image.height - 26 && lo >= 230) ++c.statusText;
+    }
+  }
+  const double n = double(image.width) * image.height;
+  c.distinctColors = colors.size();
+  c.drivableGrey = grey / n;
+  c.lidarColors = lidar / n;
+  return c;
+}
+
+// The scripted session of the issue: load the real log, step 5 frames, toggle layers, take
+// window screenshots, exit 0. The screenshots must show the map, the points and the panels,
+// and switching the point layers off must remove the points.
+TEST(ViewCommand, ScriptedSessionUnderXvfbShowsMapPointsAndPanels) {
+  const fs::path dir = freshOutputDir("view_scripted");
+  const fs::path all = dir / "all.png", noPoints = dir / "no_points.png", final = dir / "final.png";
+  writeText(dir / "script.txt", "wait 3\nstep 1\nstep 1\nstep 1\nstep 1\nstep 1\n"
+                                "layer boundary toggle\nlayer boundary toggle\nwait 2\nscreenshot " + all.string() +
+                                    "\nlayer sweep off\nlayer accumulated off\nwait 1\nscreenshot " + noPoints.string() +
+                                    "\nlayer sweep on\nview top\nwait 2\n");
+  const CommandResult r = runWithDisplay(
+      "view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(final), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const fs::path& p : {all, noPoints, final}) ASSERT_TRUE(fs::exists(p)) << p;
+
+  const render::Image image = readPng(all);
+  EXPECT_EQ(image.width, 1280);
+  EXPECT_EQ(image.height, 800);
+  const Content c = measure(image);
+  EXPECT_GT(c.distinctColors, 3000u);
+  EXPECT_GT(c.drivableGrey, 0.05);
+  EXPECT_GT(c.lidarColors, 0.02);
+  EXPECT_GT(c.checkMarks, 50u) << "no layer checkboxes: the ImGui layers panel is missing";
+  EXPECT_GT(c.statusText, 200u) << "no status bar text";
+
+  const Content without = measure(readPng(noPoints));
+  EXPECT_LT(without.lidarColors, c.lidarColors / 4) << "switching the point layers off did not remove the points";
+  EXPECT_GT(without.drivableGrey, 0.05);
+
+  const Content top = measure(readPng(final));
+  EXPECT_GT(top.lidarColors, 0.005);
+  EXPECT_GT(top.distinctColors, 3000u);
+}
+
+TEST(ViewCommand, FramesAndExitTakesAScreenshot) {
+  const fs::path dir = freshOutputDir("view_frames");
+  const fs::path shot = dir / "shot.png";
+  const CommandResult r =
+      runWithDisplay("view " + quoted(sharedLog()) + " --frames 5 --exit --size 800x600 --screenshot " + quoted(shot), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = readPng(shot);
+  EXPECT_EQ(image.width, 800);
+  EXPECT_EQ(image.height, 600);
+  EXPECT_GT(measure(image).distinctColors, 2000u);
+}
+
+// Without a log (and no demo log bundled) the app asks for a directory.
+TEST(ViewCommand, WithoutALogShowsTheOpenLogPanel) {
+  const fs::path dir = freshOutputDir("view_no_log");
+  const fs::path shot = dir / "shot.png";
+  const CommandResult r = runWithDisplay("view --frames 3 --exit --screenshot " + quoted(shot), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = readPng(shot);
+  // The panel: its title bar, frame and white text in the middle of an otherwise empty window.
+  size_t text = 0;
+  for (int y = image.height / 2 - 60; y < image.height / 2 + 60; ++y)
+    for (int x = image.width / 2 - 300; x < image.width / 2 + 300; ++x)
+      if (image.pixel(x, y)[0] > 200 && image.pixel(x, y)[1] > 200 && image.pixel(x, y)[2] > 200) ++text;
+  EXPECT_GT(text, 300u);
+}
+
+// A corrupt sweep met on the way: the scripted run stops with one line naming the file.
+TEST(ViewCommand, ScriptStopsAtACorruptSweep) {
+  const fs::path dir = freshOutputDir("view_corrupt_sweep");
+  const fs::path log = dir / "log";
+  fs::create_directories(log / "sensors" / "lidar");
+  for (const char* entry : {"map", "calibration", "city_SE3_egovehicle.feather"})
+    fs::create_symlink(fs::absolute(sharedLog() / entry), log / entry);
+  std::vector<fs::path> sweeps;
+  for (const auto& e : fs::directory_iterator(sharedLog() / "sensors" / "lidar")) sweeps.push_back(e.path());
+  std::sort(sweeps.begin(), sweeps.end());
+  fs::copy_file(sweeps[0], log / "sensors" / "lidar" / sweeps[0].filename());
+  writeText(log / "sensors" / "lidar" / sweeps[1].filename(), "not a feather file");
+  writeText(dir / "script.txt", "wait 1\nstep 1\nwait 1\n");
+  const fs::path shot = dir / "shot.png";
+  const CommandResult r =
+      runWithDisplay("view " + quoted(log) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(shot), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(sweeps[1].filename().string()), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(shot));
+}
+
+struct BadViewInput {
+  const char* name;
+  std::string args;
+  const char* message;
+};
+void PrintTo(const BadViewInput& b, std::ostream* os) { *os << b.name; }
+
+class ViewCommandBadInput : public ::testing::TestWithParam<BadViewInput> {};
+
+// Refused before any window opens: one line, exit 2, no display needed.
+TEST_P(ViewCommandBadInput, FailsWithOneLine) {
+  const fs::path dir = freshOutputDir(std::string("view_bad_") + GetParam().name);
+  writeText(dir / "bad_script.txt", "wait 1\nfly away\n");
+  writeText(dir / "good_script.txt", "wait 1\n");
+  std::string args = GetParam().args;
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"LOG", quoted(sharedLog())},
+                                   {"DIR", dir.string()}}) {
+    for (size_t at; (at = args.find(key)) != std::string::npos;) args.replace(at, key.size(), value);
+  }
+  const CommandResult r = runHdprior("view " + args);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ViewCommandBadInput,
+    ::testing::Values(BadViewInput{"missing_log", "/nonexistent/log --frames 1 --exit", "not a log directory"},
+                      BadViewInput{"bad_script", "LOG --script DIR/bad_script.txt", "line 2: unknown command 'fly'"},
+                      BadViewInput{"missing_script", "LOG --script DIR/none.txt", "none.txt"},
+                      BadViewInput{"script_and_frames", "LOG --script DIR/bad_script.txt --frames 2", "--script"},
+                      BadViewInput{"bad_frames", "LOG --frames 0 --exit", "--frames"},
+                      BadViewInput{"screenshot_folder", "LOG --frames 1 --exit --screenshot DIR/no/x.png",
+                                   "folder does not exist"},
+                      BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"},
+                      BadViewInput{"scripted_without_log", "--script DIR/good_script.txt", "needs a log"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// Without an X server the window cannot open: one line naming GLFW, never a crash.
+TEST(ViewCommand, WithoutADisplaySaysSo) {
+  const CommandResult r = runHdprior("view " + quoted(sharedLog()) + " --frames 1 --exit");
+  if (std::getenv("DISPLAY")) GTEST_SKIP() << "a display is available";
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("GLFW"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+}  // namespace
+}  // namespace hdprior::test

@@ -1,0 +1,47 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/error.h"
+#include "ui/view_script.h"
+
+namespace hdprior::test {
+namespace {
+
+TEST(ViewScript, ParsesCommandsSkippingCommentsAndBlankLines) {
+  const auto commands = ui::parseViewScript(
+      "# a script\nframe 0\n\nstep -2   # back\nlayer sweep toggle\nopacity ground 0.5\nplay max\nview top\n"
+      "wait 3\nscreenshot out.png\nexit\n",
+      "s.txt");
+  ASSERT_EQ(commands.size(), 9u);
+  EXPECT_EQ(commands[1].verb, "step");
+  EXPECT_EQ(commands[1].args, (std::vector<std::string>{"-2"}));
+  EXPECT_EQ(commands[1].line, 4);
+  EXPECT_EQ(commands[8].verb, "exit");
+}
+
+TEST(ViewScript, RejectsBadLinesNamingTheLine) {
+  const std::pair<const char*, const char*> bad[] = {
+      {"frame 0\nfly away\n", "line 2: unknown command 'fly'"},
+      {"frame -1\n", "line 1"},
+      {"step\n", "takes 1"},
+      {"layer clouds on\n", "unknown layer 'clouds'"},
+      {"layer sweep maybe\n", "on, off or toggle"},
+      {"opacity sweep 1.5\n", "0..1"},
+      {"play 3x\n", "1x, 2x, 5x or max"},
+      {"view side\n", "top or orbit"},
+      {"wait 2 3\n", "takes 1"},
+  };
+  for (const auto& [text, message] : bad) {
+    try {
+      ui::parseViewScript(text, "s.txt");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("s.txt"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hdprior::test

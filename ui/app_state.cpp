@@ -1,0 +1,72 @@
+#include "ui/app_state.h"
+
+#include <algorithm>
+
+#include "engine/error.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/hd_map.h"
+#include "render/layer_registry.h"
+#include "render/snapshot.h"
+
+namespace hdprior::ui {
+
+LoadedLog loadLog(const std::filesystem::path& dir) {
+  LoadedLog loaded;
+  // A larger sweep cache than the default: accumulated sweeps hold up to 2 x 25 + 1.
+  loaded.log = std::make_unique<ArgoverseLog>(dir, 64);
+  loaded.map = std::make_unique<HdMap>(HdMap::load(loaded.log->mapFiles(), render::renderMapOptions()));
+  return loaded;
+}
+
+AppState::AppState() = default;
+AppState::~AppState() = default;
+
+void AppState::open(LoadedLog loaded) {
+  renderer_.reset();  // its layers point into the old log and map
+  loaded_ = std::move(loaded);
+  scene_ = render::makeScene(*loaded_.log, *loaded_.map);
+  renderer_ = std::make_unique<render::Renderer>();
+  for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));
+  renderer_->setScene(scene_);
+  groundColorRange_.reset();
+  if (loaded_.map->hasGroundHeight()) groundColorRange_ = render::groundHeightColorRange(loaded_.map->groundHeight());
+  playback = Playback{};
+  camera = ViewCamera{};
+  error.reset();
+  if (frameCount() > 0) {
+    try {
+      renderer_->setFrame(render::makeFrame(scene_, 0));
+    } catch (const Error& e) {
+      error = e;
+    }
+    const Eigen::Vector3d forward = frame().cityTEgo.linear().col(0);
+    camera.yaw = std::atan2(forward.y(), forward.x());
+    camera.follow(frame().cityTEgo.translation() - scene_.origin);
+  }
+}
+
+size_t AppState::frameCount() const { return hasLog() ? loaded_.log->sweepCount() : 0; }
+
+void AppState::goToFrame(long long index) {
+  if (frameCount() == 0) return;
+  const size_t clamped = size_t(std::clamp<long long>(index, 0, (long long)frameCount() - 1));
+  if (clamped == frame().index && frame().sweep) return;
+  try {
+    renderer_->setFrame(render::makeFrame(scene_, clamped));
+  } catch (const Error& e) {
+    error = e;
+    playback.playing = false;
+    return;
+  }
+  error.reset();
+  camera.follow(frame().cityTEgo.translation() - scene_.origin);
+}
+
+render::Layer* AppState::layer(const std::string& name) {
+  if (!renderer_) return nullptr;
+  for (const auto& l : renderer_->layers())
+    if (l->name() == name) return l.get();
+  return nullptr;
+}
+
+}  // namespace hdprior::ui

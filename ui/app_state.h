@@ -1,0 +1,75 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "engine/error.h"
+#include "render/layers/ground_height_layer.h"
+#include "render/renderer.h"
+#include "render/scene.h"
+#include "ui/playback.h"
+#include "ui/view_camera.h"
+
+namespace hdprior {
+class ArgoverseLog;
+class HdMap;
+}  // namespace hdprior
+
+namespace hdprior::ui {
+
+// A log and its map as loaded off the UI thread (no GL).
+struct LoadedLog {
+  std::unique_ptr<ArgoverseLog> log;
+  std::unique_ptr<HdMap> map;
+};
+// Throws Error naming the file that is wrong.
+LoadedLog loadLog(const std::filesystem::path& dir);
+
+// The mouse over the 3-D view: the ground point under it (city frame) and the ground-height
+// raster there (NaN outside it).
+struct GroundCursor {
+  Eigen::Vector3d city = Eigen::Vector3d::Zero();
+  double groundHeight = 0.0;
+};
+
+// What the panels share: the open log, the renderer with every layer, the current frame,
+// playback and camera. Renderer calls need the window's context current.
+class AppState {
+ public:
+  AppState();
+  ~AppState();
+
+  // Takes a loaded log: builds the scene and the layers, shows frame 0 (or sets `error`).
+  void open(LoadedLog loaded);
+  bool hasLog() const { return loaded_.log != nullptr; }
+  const ArgoverseLog& log() const { return *loaded_.log; }
+  const render::Scene& scene() const { return scene_; }
+  const render::Frame& frame() const { return renderer_->frame(); }
+  size_t frameCount() const;
+  // Clamped to the log; loads the sweep and uploads per-frame data only when it changes. A
+  // frame that cannot be loaded (a corrupt sweep file) stops playback and sets `error`; the
+  // current frame stays.
+  void goToFrame(long long index);
+  void step(long long frames) { goToFrame((long long)frame().index + frames); }
+
+  render::Renderer& renderer() { return *renderer_; }
+  // The layer named so, or nullptr.
+  render::Layer* layer(const std::string& name);
+  const std::optional<render::HeightRange>& groundColorRange() const { return groundColorRange_; }
+
+  Playback playback;
+  ViewCamera camera;
+  std::optional<GroundCursor> cursor;
+  std::optional<Error> error;  // the last frame that failed to load, shown in the status bar
+
+ private:
+  LoadedLog loaded_;
+  render::Scene scene_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::optional<render::HeightRange> groundColorRange_;
+};
+
+}  // namespace hdprior::ui

@@ -1,0 +1,82 @@
+#include "ui/view_script.h"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+#include <sstream>
+
+#include "engine/error.h"
+#include "engine/io/file_bytes.h"
+#include "render/layer_registry.h"
+#include "ui/playback.h"
+
+namespace hdprior::ui {
+namespace {
+
+bool isInteger(const std::string& s) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  return ec == std::errc() && end == s.data() + s.size();
+}
+
+bool isUnitFraction(const std::string& s) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(s, &used);
+    return used == s.size() && v >= 0.0 && v <= 1.0;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+bool isLayer(const std::string& s) {
+  const auto& names = render::layerNames();
+  return std::find(names.begin(), names.end(), s) != names.end();
+}
+
+// Why the arguments are wrong for the verb; empty when they are fine.
+std::string checkArguments(const std::string& verb, const std::vector<std::string>& a) {
+  static const std::map<std::string, size_t> arity = {{"frame", 1}, {"step", 1}, {"play", 1},    {"pause", 0},
+                                                      {"view", 1},  {"layer", 2}, {"opacity", 2}, {"wait", 1},
+                                                      {"screenshot", 1}, {"exit", 0}};
+  const auto it = arity.find(verb);
+  if (it == arity.end()) return "unknown command '" + verb + "'";
+  if (a.size() != it->second) return "'" + verb + "' takes " + std::to_string(it->second) + " argument(s)";
+  if ((verb == "frame" || verb == "wait") && (!isInteger(a[0]) || a[0][0] == '-'))
+    return "'" + verb + "' needs a non-negative integer";
+  if (verb == "step" && !isInteger(a[0])) return "'step' needs an integer";
+  if (verb == "play" &&
+      std::none_of(Playback::kSpeedNames.begin(), Playback::kSpeedNames.end(), [&](const char* n) { return a[0] == n; }))
+    return "'play' needs 1x, 2x, 5x or max";
+  if (verb == "view" && a[0] != "top" && a[0] != "orbit") return "'view' needs top or orbit";
+  if ((verb == "layer" || verb == "opacity") && !isLayer(a[0])) return "unknown layer '" + a[0] + "'";
+  if (verb == "layer" && a[1] != "on" && a[1] != "off" && a[1] != "toggle") return "'layer' needs on, off or toggle";
+  if (verb == "opacity" && !isUnitFraction(a[1])) return "'opacity' needs a value in 0..1";
+  return "";
+}
+
+}  // namespace
+
+std::vector<ScriptCommand> parseViewScript(const std::string& text, const std::string& source) {
+  std::vector<ScriptCommand> commands;
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    ScriptCommand command;
+    command.line = number;
+    if (!(words >> command.verb)) continue;
+    for (std::string word; words >> word;) command.args.push_back(word);
+    if (const std::string problem = checkArguments(command.verb, command.args); !problem.empty())
+      throw Error(source, "line " + std::to_string(number) + ": " + problem);
+    commands.push_back(std::move(command));
+  }
+  return commands;
+}
+
+std::vector<ScriptCommand> readViewScript(const std::filesystem::path& file) {
+  return parseViewScript(readFileText(file), file.string());
+}
+
+}  // namespace hdprior::ui

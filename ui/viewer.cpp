@@ -1,0 +1,219 @@
+#include "ui/viewer.h"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "engine/error.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/hd_map.h"
+#include "render/png_writer.h"
+#include "render/renderer.h"
+#include "render/view_cache.h"
+#include "render/window_context.h"
+#include "ui/camera_input.h"
+#include "ui/panels/height_legend.h"
+#include "ui/panels/layers_panel.h"
+#include "ui/panels/open_log_panel.h"
+#include "ui/panels/status_bar.h"
+#include "ui/panels/timeline_panel.h"
+
+namespace hdprior::ui {
+namespace {
+
+size_t speedIndex(const std::string& name) {
+  for (size_t i = 0; i < Playback::kSpeedNames.size(); ++i)
+    if (name == Playback::kSpeedNames[i]) return i;
+  return 0;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewerOptions& options)
+    : options_(options),
+      window_(std::make_unique<render::WindowContext>(options.width, options.height, "hdprior view")),
+      state_(std::make_unique<AppState>()),
+      viewCache_(std::make_unique<render::ViewCache>()) {
+  window_->setSwapInterval(options.swapInterval);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the same layout every start, no file in the working directory
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().WindowRounding = 3.0f;
+  ImGui_ImplGlfw_InitForOpenGL(window_->handle(), true);
+  if (!ImGui_ImplOpenGL3_Init("#version 330 core")) throw Error("ImGui", "cannot set up its OpenGL 3 renderer");
+  imguiReady_ = true;
+  lastTime_ = glfwGetTime();
+  if (options.log) startLoading(*options.log, true);
+}
+
+Viewer::~Viewer() {
+  if (loading_.valid()) loading_.wait();
+  state_.reset();  // GL objects go while the context is alive
+  viewCache_.reset();
+  if (imguiReady_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+  }
+  if (ImGui::GetCurrentContext()) ImGui::DestroyContext();
+}
+
+bool Viewer::running() const { return !stop_ && !window_->shouldClose(); }
+
+void Viewer::startLoading(const std::filesystem::path& dir, bool fromOptions) {
+  loadError_.clear();
+  loadingFromOptions_ = fromOptions;
+  loading_ = std::async(std::launch::async, [dir] { return loadLog(dir); });
+}
+
+void Viewer::finishLoading() {
+  if (!loading_.valid() || loading_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    state_->open(loading_.get());
+  } catch (const Error& e) {
+    if (loadingFromOptions_) throw;
+    loadError_ = e.what();
+  }
+}
+
+void Viewer::waitForLog() {
+  if (loading_.valid()) loading_.wait();
+  finishLoading();
+}
+
+// Runs script commands until one needs a drawn frame (wait, screenshot) or the script ends.
+void Viewer::runScript() {
+  if (!options_.scripted || !state_->hasLog()) return;
+  if (state_->error) throw *state_->error;  // a script stops at a frame that cannot be loaded
+  if (waitFrames_ > 0) {
+    --waitFrames_;
+    return;
+  }
+  while (nextCommand_ < options_.script.size()) {
+    const ScriptCommand& c = options_.script[nextCommand_++];
+    const auto& a = c.args;
+    if (c.verb == "frame") state_->goToFrame(std::stoll(a[0]));
+    else if (c.verb == "step") state_->step(std::stoll(a[0]));
+    else if (c.verb == "play") {
+      state_->playback.playing = true;
+      state_->playback.speed = int(speedIndex(a[0]));
+    } else if (c.verb == "pause") state_->playback.playing = false;
+    else if (c.verb == "view") state_->camera.topDown = a[0] == "top";
+    else if (c.verb == "layer") {
+      render::Layer& layer = *state_->layer(a[0]);
+      layer.visible = a[1] == "toggle" ? !layer.visible : a[1] == "on";
+    } else if (c.verb == "opacity") state_->layer(a[0])->opacity = std::stof(a[1]);
+    else if (c.verb == "wait") {
+      waitFrames_ = std::stoi(a[0]);
+      return;
+    } else if (c.verb == "screenshot") {
+      screenshotAfterDraw_ = a[0];
+      return;
+    } else if (c.verb == "exit") {
+      exitAfterDraw_ = true;
+      return;
+    }
+    if (state_->error) throw *state_->error;  // a script stops at a frame that cannot be loaded
+  }
+  // The end of the script: the final screenshot, then exit.
+  if (options_.screenshot) screenshotAfterDraw_ = options_.screenshot;
+  exitAfterDraw_ = true;
+}
+
+void Viewer::updateCursor() {
+  state_->cursor.reset();
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse || !ImGui::IsMousePosValid()) return;
+  const int w = window_->framebufferWidth(), h = window_->framebufferHeight();
+  const Eigen::Vector2d pixel(io.MousePos.x * io.DisplayFramebufferScale.x, io.MousePos.y * io.DisplayFramebufferScale.y);
+  const render::Scene& scene = state_->scene();
+  const double fallbackZ = state_->frame().groundZ - scene.origin.z();
+  const auto hit = pickGround(state_->camera.camera(double(w) / std::max(1, h)), pixel, w, h, scene, fallbackZ);
+  if (!hit) return;
+  GroundCursor cursor;
+  cursor.city = *hit + scene.origin;
+  const double g = scene.map->hasGroundHeight() ? scene.map->groundHeight().bilinearAt(cursor.city.head<2>()) : NAN;
+  cursor.groundHeight = g;
+  state_->cursor = cursor;
+}
+
+void Viewer::drawPanels() {
+  if (!state_->hasLog()) {
+    if (auto dir = drawOpenLogPanel(loading_.valid(), loadError_)) startLoading(*dir, false);
+    return;
+  }
+  drawLayersPanel(*state_);
+  drawTimelinePanel(*state_);
+  drawStatusBar(*state_);
+  drawHeightLegend(*state_);
+}
+
+void Viewer::takeScreenshot(const std::filesystem::path& file) {
+  render::writePng(file, window_->readBackBuffer());
+  std::printf("wrote %s\n", file.string().c_str());
+}
+
+void Viewer::frame() {
+  glfwPollEvents();
+  finishLoading();
+  const double now = glfwGetTime(), dt = now - lastTime_;
+  lastTime_ = now;
+  runScript();
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const int w = window_->framebufferWidth(), h = window_->framebufferHeight();
+  if (state_->hasLog()) {
+    handleViewInput(*state_, float(h));
+    state_->goToFrame((long long)state_->playback.advance(state_->frame().index, state_->log().sweepTimestamps(), dt));
+    updateCursor();
+  }
+  drawPanels();
+  ImGui::Render();
+
+  if (state_->hasLog()) {
+    const render::Camera camera = state_->camera.camera(double(w) / std::max(1, h));
+    // While the camera moves, point layers draw a uniform subset; the first still frame draws all.
+    const Eigen::Matrix4f viewProjection = camera.viewProjection();
+    const bool moving = viewProjection != lastViewProjection_;
+    lastViewProjection_ = viewProjection;
+    const size_t points = state_->renderer().pointsDrawn();
+    const int stride = moving && options_.interactivePoints > 0
+                           ? int(std::max<size_t>(1, (points + options_.interactivePoints - 1) / options_.interactivePoints))
+                           : 1;
+    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
+    viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h, stride); });
+  } else {
+    render::clearView(w, h);
+  }
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+  // Frames count once the log is open (or from the start when there is none: the open-log panel).
+  if ((state_->hasLog() || !options_.log) && ++framesWithLog_ == options_.frames) {
+    if (options_.screenshot) screenshotAfterDraw_ = options_.screenshot;
+    exitAfterDraw_ = exitAfterDraw_ || options_.exitAfterFrames;
+  }
+  if (screenshotAfterDraw_) {
+    takeScreenshot(*screenshotAfterDraw_);
+    screenshotAfterDraw_.reset();
+  }
+  if (exitAfterDraw_) stop_ = true;
+  window_->swapBuffers();
+}
+
+int runViewer(const ViewerOptions& options) {
+  Viewer viewer(options);
+  while (viewer.running()) viewer.frame();
+  return 0;
+}
+
+}  // namespace hdprior::ui
