@@ -1,9 +1,11 @@
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "engine/error.h"
+#include "engine/sim/demo_log.h"
 #include "render/snapshot.h"
 #include "ui/viewer.h"
 
@@ -12,9 +14,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The log `hdprior view` opens without a LOG argument. The hook for the bundled demo log: none
-// is bundled yet, so the app asks for a directory.
-std::optional<fs::path> bundledDemoLog() { return std::nullopt; }
+// The log `hdprior view` opens without a LOG argument: the simulator's demo town, generated into
+// the cache on first use. If that fails the app still starts and asks for a directory.
+std::optional<fs::path> bundledDemoLog() {
+  try {
+    if (!fs::is_directory(demoCacheDir() / ("demo-v" + std::to_string(kDemoLogVersion))))
+      std::fprintf(stderr, "hdprior view: generating the demo log into %s (first use only)\n", demoCacheDir().c_str());
+    return demoLogPath();
+  } catch (const Error& e) {
+    std::fprintf(stderr, "hdprior view: no demo log (%s); choose a log in the window\n", e.what());
+    return std::nullopt;
+  }
+}
 
 void checkPngPath(const fs::path& out) {
   const fs::path dir = out.parent_path().empty() ? "." : out.parent_path();
@@ -53,7 +64,7 @@ int runView(const std::vector<std::string>& args) {
   } else {
     options.log = bundledDemoLog();
   }
-  if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (no demo log is bundled)");
+  if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (the demo log could not be generated)");
   return ui::runViewer(options);
 }
 
