@@ -43,24 +43,36 @@ fs::path makeBenchLog(int sweeps) {
   return dir;
 }
 
-enum class Motion { Still, Orbiting };
-
-void viewBench(benchmark::State& state, bool topDown, bool cacheView, Motion motion = Motion::Still) {
+// 1280x720 without vsync on the bench log of 7 sweeps.
+ui::ViewerOptions benchOptions() {
   ui::ViewerOptions options;
-  options.cacheView = cacheView;
-  if (!cacheView) options.interactivePoints = 0;  // every point, every frame
   options.log = makeBenchLog(7);
   options.width = 1280;
   options.height = 720;
   options.swapInterval = 0;
-  std::unique_ptr<ui::Viewer> viewer;
+  return options;
+}
+
+// The viewer with its log loaded, or nullptr (and the benchmark skipped) without a display.
+std::unique_ptr<ui::Viewer> openViewer(benchmark::State& state, const ui::ViewerOptions& options) {
   try {
-    viewer = std::make_unique<ui::Viewer>(options);
+    auto viewer = std::make_unique<ui::Viewer>(options);
+    viewer->waitForLog();
+    return viewer;
   } catch (const Error& e) {
     state.SkipWithError((std::string("needs a display, run under xvfb-run -a: ") + e.what()).c_str());
-    return;
+    return nullptr;
   }
-  viewer->waitForLog();
+}
+
+enum class Motion { Still, Orbiting };
+
+void viewBench(benchmark::State& state, bool topDown, bool cacheView, Motion motion = Motion::Still) {
+  ui::ViewerOptions options = benchOptions();
+  options.cacheView = cacheView;
+  if (!cacheView) options.interactivePoints = 0;  // every point, every frame
+  const std::unique_ptr<ui::Viewer> viewer = openViewer(state, options);
+  if (!viewer) return;
   ui::AppState& app = viewer->state();
   auto* accumulated = dynamic_cast<render::AccumulatedSweepsLayer*>(app.layer("accumulated"));
   accumulated->setWindow(3);
@@ -87,19 +99,8 @@ void BM_ViewFullRedraw1280x720Top(benchmark::State& state) { viewBench(state, tr
 // A frame change: the current sweep (about 100,000 points) and one newly accumulated sweep
 // coloured and uploaded, then drawn. Alternates between two frames.
 void BM_ViewFrameChange(benchmark::State& state) {
-  ui::ViewerOptions options;
-  options.log = makeBenchLog(7);
-  options.width = 1280;
-  options.height = 720;
-  options.swapInterval = 0;
-  std::unique_ptr<ui::Viewer> viewer;
-  try {
-    viewer = std::make_unique<ui::Viewer>(options);
-  } catch (const Error& e) {
-    state.SkipWithError((std::string("needs a display, run under xvfb-run -a: ") + e.what()).c_str());
-    return;
-  }
-  viewer->waitForLog();
+  const std::unique_ptr<ui::Viewer> viewer = openViewer(state, benchOptions());
+  if (!viewer) return;
   ui::AppState& app = viewer->state();
   for (int i = 0; i < 5; ++i) viewer->frame();
   long long frame = 3;
