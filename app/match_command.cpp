@@ -12,6 +12,7 @@
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
+#include "engine/pipeline/config.h"
 
 namespace hdprior::app {
 namespace {
@@ -56,15 +57,16 @@ std::string matrix(const Eigen::Matrix3d& m) {
 }  // namespace
 
 int runMatch(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"frame", "init", "backend", "time-budget"}, .flags = {}, .minPositional = 1,
+  const CommandLine cl(args, {.valued = {"frame", "init", "backend", "time-budget", "config"}, .flags = {}, .minPositional = 1,
                               .maxPositional = 1,
-                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--time-budget MS]"});
+                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--time-budget MS] [--config FILE]"});
   if (!cl.has("frame")) throw Error("option --frame", "missing (the sweep to match)");
   const long long frame = cl.integer("frame", -1);
   if (frame < 0) throw Error("option --frame", "must not be negative");
   const Eigen::Vector3d offset = parseOffset(cl.value("init").value_or("0,0,0"));
-  MatchOptions options;
-  options.backend = parseBackend(cl.value("backend").value_or("ndt2d"));
+  const Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
+  MatchOptions options = config.match;
+  if (cl.value("backend")) options.backend = parseBackend(*cl.value("backend"));
   options.timeBudgetMs = cl.number("time-budget", options.timeBudgetMs);
   if (!(options.timeBudgetMs > 0) || !std::isfinite(options.timeBudgetMs)) throw Error("option --time-budget", "must be a positive number of milliseconds");
 
@@ -82,7 +84,7 @@ int runMatch(const std::vector<std::string>& args) {
   // Roll and pitch come from the ground truth here (the pipeline takes them from odometry).
   const SE3 truth3 = log.cityTEgo().at(stamp);
   const Eigen::Vector3d truth = planarPose(truth3);
-  const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*log.sweep(size_t(frame)), levelRotation(truth3));
+  const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*log.sweep(size_t(frame)), levelRotation(truth3), config.roadPoints);
   const Eigen::Vector3d initial = offsetPose(truth, offset);
   MapMatcher matcher(map, options);
   const MatchResult r = matcher.match(points, initial);

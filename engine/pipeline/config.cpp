@@ -1,5 +1,7 @@
 #include "engine/pipeline/config.h"
 
+#include <algorithm>
+#include <functional>
 #include <limits>
 #include <map>
 #include <variant>
@@ -15,10 +17,22 @@ namespace {
 using nlohmann::json;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// An enum stored as one of its names.
+struct Choice {
+  std::vector<const char*> names;
+  std::function<int()> get;
+  std::function<void(int)> set;
+};
+
+template <class E>
+Choice choice(E* e, std::vector<const char*> names) {
+  return {std::move(names), [e] { return int(*e); }, [e](int v) { *e = E(v); }};
+}
+
 struct Field {
   const char* key;
-  std::variant<int*, double*, bool*, std::string*> value;
-  double lo = -kInf, hi = kInf;  // inclusive range of numbers
+  std::variant<int*, double*, bool*, std::string*, std::vector<double>*, std::vector<int>*, Eigen::Vector3d*, Choice> value;
+  double lo = -kInf, hi = kInf;  // inclusive range of numbers (of every element of an array)
 };
 using Sections = std::map<std::string, std::vector<Field>>;  // section path -> its fields
 
@@ -27,6 +41,9 @@ Sections sectionsOf(Config& c) {
   FeatureOptions& f = c.odometry.features;
   RegistrationOptions& r = c.odometry.registration;
   LocalMapOptions& m = c.odometry.localMap;
+  GroundSegmentationOptions& g = c.roadPoints.ground;
+  RoadPointOptions& rp = c.roadPoints.road;
+  MatchOptions& mt = c.match;
   return {
       {"odometry", {}},
       {"odometry.features",
@@ -58,31 +75,134 @@ Sections sectionsOf(Config& c) {
         {"min_point_spacing", &m.minPointSpacing, 0, 100},
         {"radius", &m.radius, 1, 100000}}},
       {"keyframes", {{"distance", &c.keyframes.distance, 0, 100000}, {"rotation_deg", &c.keyframes.rotationDeg, 0, 360}}},
+      {"road_points", {{"thin_cell", &c.roadPoints.thinCell, 0, 10}, {"submap", &c.submapRoadPoints}}},
+      {"road_points.ground",
+       {{"ground_z", &g.groundZ, -10, 10},
+        {"min_range", &g.minRange, 0, 1000},
+        {"max_range", &g.maxRange, 0, 1000},
+        {"zone_radii", &g.zoneRadii, 0.1, 1000},
+        {"zone_rings", &g.zoneRings, 1, 100},
+        {"zone_sectors", &g.zoneSectors, 1, 1000},
+        {"min_bin_points", &g.minBinPoints, 3, 10000},
+        {"seed_points", &g.seedPoints, 1, 10000},
+        {"seed_height", &g.seedHeight, 0, 10},
+        {"plane_distance", &g.planeDistance, 0.001, 10},
+        {"iterations", &g.iterations, 1, 100},
+        {"max_tilt_deg", &g.maxTiltDeg, 0, 90},
+        {"max_elevation", &g.maxElevation, 0, 100},
+        {"elevation_per_metre", &g.elevationPerMetre, 0, 10}}},
+      {"road_points.road",
+       {{"ground_z", &rp.groundZ, -10, 10},
+        {"max_range", &rp.maxRange, 0, 1000},
+        {"max_step", &rp.maxStep, 0, 10},
+        {"step_per_metre", &rp.stepPerMetre, 0, 10},
+        {"max_gap", &rp.maxGap, 0, 1000},
+        {"window", &rp.window, 0, 1000},
+        {"max_skipped", &rp.maxSkipped, 0, 10000},
+        {"seed_half_width", &rp.seedHalfWidth, 0, 100},
+        {"seed_tolerance", &rp.seedTolerance, 0, 10},
+        {"seed_tolerance_per_metre", &rp.seedTolerancePerMetre, 0, 10}}},
+      {"match",
+       {{"backend", choice(&mt.backend, {"ndt2d", "pcl"})},
+        {"cell_sizes", &mt.cellSizes, 0.1, 100},
+        {"outlier_ratio", &mt.outlierRatio, 0, 0.999},
+        {"lookup", choice(&mt.lookup, {"containing_cell", "four_nearest"})},
+        {"max_iterations", &mt.maxIterations, 1, 1000},
+        {"max_coarse_stride", &mt.maxCoarseStride, 1, 1000},
+        {"max_step_cells", &mt.maxStepCells, 0.01, 100},
+        {"max_step_yaw_deg", &mt.maxStepYawDeg, 0.01, 180},
+        {"translation_tolerance", &mt.translationTolerance, 0, 10},
+        {"yaw_tolerance_deg", &mt.yawToleranceDeg, 0, 10},
+        {"time_budget_ms", &mt.timeBudgetMs, 0.001, 1e6},
+        {"pcl_resolution", &mt.pclResolution, 0.05, 100},
+        {"pcl_step_size", &mt.pclStepSize, 1e-4, 10},
+        {"pcl_epsilon", &mt.pclEpsilon, 0, 10},
+        {"pcl_max_iterations", &mt.pclMaxIterations, 1, 1000},
+        {"pcl_target_spacing", &mt.pclTargetSpacing, 0.01, 100},
+        {"per_cell_information", &mt.perCellInformation},
+        {"yaw_length", &mt.yawLength, 0.01, 1000},
+        {"boundary_band", &mt.boundaryBand, 0, 100},
+        {"degenerate_ratio", &mt.degenerateRatio, 0, 1},
+        {"min_boundary_points", &mt.minBoundaryPoints, 0, 1e6},
+        {"min_information", &mt.minInformation, 0, 1e9},
+        {"min_points", &mt.minPoints, 0, 10000000},
+        {"min_inlier_ratio", &mt.minInlierRatio, 0, 1},
+        {"prediction_sigma", &mt.predictionSigma, 1e-6, 1000},
+        {"gate_chi2", &mt.gateChi2, 0, 1e9},
+        {"min_score_per_point", &mt.minScorePerPoint, -1e9, 1e9}}},
+      {"prior", {{"ego_height", &c.prior.egoHeight, -10, 10}, {"altitude_sigma", &c.prior.altitudeSigma, 1e-4, 100}}},
+      {"graph",
+       {{"prior_huber", &c.graph.priorHuber, 0, 1e6},
+        {"max_iterations", &c.graph.maxIterations, 1, 10000},
+        {"incremental_window", &c.graph.incrementalWindow, 0, 1000000}}},
   };
 }
 
 std::string rangeText(const Field& f) {
-  return "[" + json(f.lo).dump() + ", " + json(f.hi).dump() + "]";
+  std::string text = "[";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "[" + string
+  text += json(f.lo).dump();
+  text += ", ";
+  text += json(f.hi).dump();
+  return text + "]";
+}
+
+template <class T>
+T numberIn(const Field& f, const json& v, const std::string& key, const std::string& source) {
+  const double d = std::is_same_v<T, int> ? double(json_reading::integer(v, key, source)) : json_reading::number(v, key, source);
+  if (d < f.lo || d > f.hi) throw Error(source, key + " = " + v.dump() + " is out of range " + rangeText(f));
+  return T(d);
+}
+
+template <class T>
+std::vector<T> arrayIn(const Field& f, const json& v, const std::string& key, const std::string& source) {
+  if (!v.is_array() || v.empty()) throw Error(source, key + " must be a non-empty array of numbers");
+  std::vector<T> out;
+  for (const json& e : v) out.push_back(numberIn<T>(f, e, key, source));
+  return out;
 }
 
 void setField(const Field& f, const json& v, const std::string& key, const std::string& source) {
-  std::visit(
-      [&](auto* p) {
-        using T = std::remove_pointer_t<decltype(p)>;
-        if constexpr (std::is_same_v<T, bool>) {
-          if (!v.is_boolean()) throw Error(source, key + " must be true or false");
-          *p = v.get<bool>();
-        } else if constexpr (std::is_same_v<T, std::string>) {
-          if (!v.is_string()) throw Error(source, key + " must be a string");
-          *p = v.get<std::string>();
-        } else {
-          const double d = std::is_same_v<T, int> ? double(json_reading::integer(v, key, source)) : json_reading::number(v, key, source);
-          if (d < f.lo || d > f.hi) throw Error(source, key + " = " + v.dump() + " is out of range " + rangeText(f));
-          *p = T(d);
-        }
-      },
-      f.value);
+  struct Setter {
+    const Field& f;
+    const json& v;
+    const std::string& key;
+    const std::string& source;
+    void operator()(bool* p) const {
+      if (!v.is_boolean()) throw Error(source, key + " must be true or false");
+      *p = v.get<bool>();
+    }
+    void operator()(std::string* p) const {
+      if (!v.is_string()) throw Error(source, key + " must be a string");
+      *p = v.get<std::string>();
+    }
+    void operator()(int* p) const { *p = numberIn<int>(f, v, key, source); }
+    void operator()(double* p) const { *p = numberIn<double>(f, v, key, source); }
+    void operator()(std::vector<double>* p) const { *p = arrayIn<double>(f, v, key, source); }
+    void operator()(std::vector<int>* p) const { *p = arrayIn<int>(f, v, key, source); }
+    void operator()(Eigen::Vector3d* p) const {
+      const std::vector<double> a = arrayIn<double>(f, v, key, source);
+      if (a.size() != 3) throw Error(source, key + " must be an array of 3 numbers");
+      *p = {a[0], a[1], a[2]};
+    }
+    void operator()(const Choice& c) const {
+      for (size_t i = 0; i < c.names.size(); ++i) {
+        if (v.is_string() && v.get<std::string>() == c.names[i]) return c.set(int(i));
+      }
+      std::string names;
+      for (const char* n : c.names) names += std::string(names.empty() ? "" : " or ") + "\"" + n + "\"";
+      throw Error(source, key + " must be " + names);
+    }
+  };
+  std::visit(Setter{f, v, key, source}, f.value);
 }
+
+struct Getter {
+  json operator()(const Eigen::Vector3d* p) const { return {p->x(), p->y(), p->z()}; }
+  json operator()(const Choice& c) const { return c.names.at(size_t(c.get())); }
+  json operator()(const auto* p) const { return *p; }
+};
+
+json valueOf(const Field& f) { return std::visit(Getter{}, f.value); }
 
 void readSection(const json& obj, const std::string& path, const Sections& sections, Config& c, const std::string& source) {
   if (!obj.is_object()) throw Error(source, (path.empty() ? std::string("the file") : path) + " must be a JSON object");
@@ -90,11 +210,6 @@ void readSection(const json& obj, const std::string& path, const Sections& secti
     const std::string full = path.empty() ? key : path + "." + key;
     if (sections.count(full)) {
       readSection(value, full, sections, c, source);
-      continue;
-    }
-    if (path.empty() && (key == "road_points" || key == "match" || key == "graph")) {
-      if (!value.is_object()) throw Error(source, key + " must be a JSON object");
-      (key == "road_points" ? c.roadPointsJson : key == "match" ? c.matchJson : c.graphJson) = value.dump();
       continue;
     }
     const auto it = sections.find(path);
@@ -121,6 +236,16 @@ Config parseConfig(const std::string& text, const std::string& source) {
   if (c.odometry.features.minRange >= c.odometry.features.maxRange) {
     throw Error(source, "odometry.features.min_range must be below max_range");
   }
+  const GroundSegmentationOptions& g = c.roadPoints.ground;
+  if (g.zoneRadii.size() != g.zoneRings.size() || g.zoneRadii.size() != g.zoneSectors.size()) {
+    throw Error(source, "road_points.ground.zone_radii, zone_rings and zone_sectors must have the same length");
+  }
+  if (!std::is_sorted(g.zoneRadii.begin(), g.zoneRadii.end()) || g.minRange >= g.zoneRadii.front()) {
+    throw Error(source, "road_points.ground.zone_radii must increase from above min_range");
+  }
+  if (!std::is_sorted(c.match.cellSizes.rbegin(), c.match.cellSizes.rend())) {
+    throw Error(source, "match.cell_sizes must go from coarse to fine (decreasing)");
+  }
   return c;
 }
 
@@ -133,12 +258,9 @@ std::string formatConfig(const Config& config) {
     json& section = root[json::json_pointer(slashPath)];
     if (section.is_null()) section = json::object();
     for (const Field& f : fields) {
-      std::visit([&](auto* p) { section[f.key] = *p; }, f.value);
+      section[f.key] = valueOf(f);
     }
   }
-  root["road_points"] = json::parse(c.roadPointsJson);
-  root["match"] = json::parse(c.matchJson);
-  root["graph"] = json::parse(c.graphJson);
   return root.dump(2) + "\n";
 }
 

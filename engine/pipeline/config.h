@@ -2,6 +2,10 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/graph/pose_graph.h"
+#include "engine/graph/pose_prior.h"
+#include "engine/lidar/sweep_road_points.h"
+#include "engine/match/match_options.h"
 #include "engine/odom/odometry_options.h"
 
 namespace hdprior {
@@ -13,18 +17,19 @@ namespace hdprior {
 // {
 //   "odometry": {"features": {...}, "deskew": {"mode": "none"}, "registration": {...}, "local_map": {...}},
 //   "keyframes": {"distance": 2.0, "rotation_deg": 10.0},
-//   "road_points": {}, "match": {}, "graph": {}
+//   "road_points": {"ground": {...}, "road": {...}, "thin_cell": 0.1, "submap": false},
+//   "match": {"backend": "ndt2d", "cell_sizes": [4, 2, 1], ...},
+//   "prior": {"ego_height": 0.32, "altitude_sigma": 0.1},
+//   "graph": {"prior_huber": 1.0, ...}
 // }
 struct Config {
   OdometryOptions odometry;
   KeyframeOptions keyframes;
-
-  // RESERVED for the stages built elsewhere (road points, the 2-D NDT matcher, the pose graph):
-  // until their option structs are wired in here, each section must be a JSON object and is kept
-  // verbatim (as JSON text) so saving a loaded file does not lose it.
-  std::string roadPointsJson = "{}";
-  std::string matchJson = "{}";
-  std::string graphJson = "{}";
+  SweepRoadPointOptions roadPoints;
+  bool submapRoadPoints = false;  // match the key-frame sub-map's road points, not the keyframe sweep's alone
+  MatchOptions match;
+  PosePriorOptions prior;
+  PoseGraphOptions graph;
 };
 
 Config parseConfig(const std::string& jsonText, const std::string& source);

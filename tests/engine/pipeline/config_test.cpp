@@ -26,17 +26,34 @@ TEST(Config, DefaultsRoundTripThroughJson) {
   EXPECT_EQ(back.odometry.deskew.mode, "none");
 }
 
-TEST(Config, ReadsNestedValuesAndKeepsReservedSections) {
+TEST(Config, ReadsNestedValuesOfEveryStage) {
   const Config c = parseConfig(R"({"odometry": {"features": {"edge_curvature": 0.05}, "registration": {"scan_to_scan_guess": true},
                                    "deskew": {"mode": "constant_velocity"}},
-                                   "keyframes": {"distance": 3.5}, "match": {"resolution": 1.0}})",
+                                   "keyframes": {"distance": 3.5},
+                                   "road_points": {"submap": true, "thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
+                                                   "road": {"max_step": 0.08}},
+                                   "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0], "lookup": "containing_cell",
+                                             "prediction_sigma": [1, 2, 0.1]},
+                                   "prior": {"ego_height": 0.4}, "graph": {"prior_huber": 2.5}})",
                                "c.json");
   EXPECT_DOUBLE_EQ(c.odometry.features.edgeCurvature, 0.05);
   EXPECT_TRUE(c.odometry.registration.scanToScanGuess);
   EXPECT_EQ(c.odometry.deskew.mode, "constant_velocity");
   EXPECT_DOUBLE_EQ(c.keyframes.distance, 3.5);
   EXPECT_DOUBLE_EQ(c.keyframes.rotationDeg, 10.0);
-  EXPECT_NE(formatConfig(c).find("\"resolution\": 1.0"), std::string::npos);
+  EXPECT_TRUE(c.submapRoadPoints);
+  EXPECT_DOUBLE_EQ(c.roadPoints.thinCell, 0.2);
+  EXPECT_EQ(c.roadPoints.ground.zoneRings, (std::vector<int>{2, 2, 2, 2}));
+  EXPECT_DOUBLE_EQ(c.roadPoints.road.maxStep, 0.08);
+  EXPECT_EQ(c.match.backend, MatchBackend::PclNdt);
+  EXPECT_EQ(c.match.cellSizes, (std::vector<double>{2.0, 1.0}));
+  EXPECT_EQ(c.match.lookup, NdtLookup::ContainingCell);
+  EXPECT_EQ(c.match.predictionSigma, Eigen::Vector3d(1, 2, 0.1));
+  EXPECT_DOUBLE_EQ(c.prior.egoHeight, 0.4);
+  EXPECT_DOUBLE_EQ(c.graph.priorHuber, 2.5);
+  const Config back = parseConfig(formatConfig(c), "back.json");
+  EXPECT_EQ(formatConfig(back), formatConfig(c));
+  EXPECT_NE(formatConfig(c).find("\"backend\": \"pcl\""), std::string::npos);
 }
 
 TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
@@ -46,6 +63,14 @@ TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
   EXPECT_NE(errorOf(R"({"odometry": {"local_map": {"max_points_per_voxel": 2.5}}})").find("odometry.local_map.max_points_per_voxel is not an integer"), std::string::npos);
   EXPECT_NE(errorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})").find("odometry.deskew.mode"), std::string::npos);
   EXPECT_NE(errorOf(R"({"match": 3})").find("match must be a JSON object"), std::string::npos);
+  EXPECT_EQ(errorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be \"ndt2d\" or \"pcl\"");
+  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.1, 100.0]");
+  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": []}})"), "my.json: match.cell_sizes must be a non-empty array of numbers");
+  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 2.0]}})"), "my.json: match.cell_sizes must go from coarse to fine (decreasing)");
+  EXPECT_EQ(errorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
+  EXPECT_EQ(errorOf(R"({"road_points": {"ground": {"zone_rings": [1, 2]}}})"),
+            "my.json: road_points.ground.zone_radii, zone_rings and zone_sectors must have the same length");
+  EXPECT_EQ(errorOf(R"({"graph": {"unknown": 1}})"), "my.json: unknown key graph.unknown");
   EXPECT_NE(errorOf("{").find("invalid JSON"), std::string::npos);
 }
 
