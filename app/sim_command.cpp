@@ -1,8 +1,10 @@
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/progress_bar.h"
 #include "engine/error.h"
 #include "engine/sim/log_writer.h"
 
@@ -13,15 +15,6 @@ uint64_t seedOption(const CommandLine& cl, const std::string& name) {
   const long long v = cl.integer(name, 0);
   if (v < 0) throw Error("option --" + name, "must not be negative");
   return uint64_t(v);
-}
-
-void drawProgress(size_t done, size_t total) {
-  const int width = 40;
-  const int filled = total ? int(width * done / total) : width;
-  std::fprintf(stderr, "\rsim [%s%s] %zu/%zu sweeps", std::string(size_t(filled), '#').c_str(),
-               std::string(size_t(width - filled), ' ').c_str(), done, total);
-  if (done == total) std::fprintf(stderr, "\n");
-  std::fflush(stderr);
 }
 
 }  // namespace
@@ -51,7 +44,7 @@ int runSim(const std::vector<std::string>& args) {
   o.scene.parked = cl.number("parked", 0.5);
   o.mapChange = cl.number("map-change", 0.0);
   o.threads = int(cl.integer("threads", 2));
-  if (!cl.has("quiet")) o.progress = drawProgress;
+  if (!cl.has("quiet")) o.progress = [bar = std::make_shared<ProgressBar>("sim")](size_t d, size_t t) { (*bar)(d, t); };
   const SimulationResult r = simulateLog(o);
   std::printf("%s\n", r.logId.c_str());
   return 0;

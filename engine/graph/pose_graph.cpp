@@ -26,14 +26,16 @@ PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>())
 
 PoseGraph::~PoseGraph() = default;
 
-size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial) {
+size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial) { return addKeyframe(timestampNs, initial, initial); }
+
+size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3& start) {
   if (!timestamps_.empty() && timestampNs <= timestamps_.back()) {
     throw Error("pose graph", "keyframe timestamps must increase");
   }
   timestamps_.push_back(timestampNs);
   initial_.push_back(initial);
-  impl_->q.push_back(std::make_unique<Eigen::Quaterniond>(Eigen::Quaterniond(initial.rotation()).normalized()));
-  impl_->t.push_back(std::make_unique<Eigen::Vector3d>(initial.translation()));
+  impl_->q.push_back(std::make_unique<Eigen::Quaterniond>(Eigen::Quaterniond(start.rotation()).normalized()));
+  impl_->t.push_back(std::make_unique<Eigen::Vector3d>(start.translation()));
   impl_->hasPrior.push_back(false);
   impl_->problem.AddParameterBlock(impl_->q.back()->coeffs().data(), 4, new ceres::EigenQuaternionManifold);
   impl_->problem.AddParameterBlock(impl_->t.back()->data(), 3);

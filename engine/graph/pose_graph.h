@@ -17,6 +17,10 @@ struct PoseGraphOptions {
   double priorHuber = 1.0;     // robust (Huber) loss on prior residuals, in whitened units
   int maxIterations = 50;      // per solve
   int incrementalWindow = 0;   // 0: every keyframe is free in incremental solves; else only the last N
+  // Added (as variances) to the odometry's relative covariance per keyframe: scan-to-map covariances
+  // count every residual as independent and ignore the local map's own drift.
+  double odometryTranslationSigma = 0.0;  // metres
+  double odometryRotationSigmaDeg = 0.0;
 };
 
 struct SolveSummary {
@@ -38,8 +42,11 @@ class PoseGraph {
   PoseGraph(const PoseGraph&) = delete;
   PoseGraph& operator=(const PoseGraph&) = delete;
 
-  // Returns the keyframe's index. Timestamps must increase.
+  // Returns the keyframe's index. Timestamps must increase. `initial` is the pose the correction
+  // is taken against (the odometry's); the solver starts from `start` (default: initial), e.g. the
+  // odometry corrected by the graph so far.
   size_t addKeyframe(int64_t timestampNs, const SE3& initial);
+  size_t addKeyframe(int64_t timestampNs, const SE3& initial, const SE3& start);
   // information over the residual [rotation (3), translation (3)].
   void addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information);
   void addPrior(size_t i, const PosePrior& prior);

@@ -1,4 +1,5 @@
 #pragma once
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,5 +21,16 @@ struct SweepRoadPointOptions {
 // and projected to (x, y), thinned. In the ego frame's heading.
 std::vector<Eigen::Vector2d> sweepRoadPoints(const LidarSweep& sweep, const Eigen::Matrix3d& egoLevel,
                                              const SweepRoadPointOptions& options = {});
+
+// One sweep of a key-frame sub-map: its levelling rotation and its SE(2) pose (x, y, yaw) in the
+// level frame of the key frame.
+struct SubmapSweep {
+  const LidarSweep* sweep = nullptr;
+  Eigen::Matrix3d egoLevel = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d keyframeTSweep = Eigen::Vector3d::Zero();
+};
+
+// The road points of several sweeps in the key frame's level frame, thinned together.
+std::vector<Eigen::Vector2d> submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options = {});
 
 }  // namespace hdprior

@@ -134,7 +134,9 @@ Sections sectionsOf(Config& c) {
       {"graph",
        {{"prior_huber", &c.graph.priorHuber, 0, 1e6},
         {"max_iterations", &c.graph.maxIterations, 1, 10000},
-        {"incremental_window", &c.graph.incrementalWindow, 0, 1000000}}},
+        {"incremental_window", &c.graph.incrementalWindow, 0, 1000000},
+        {"odometry_translation_sigma", &c.graph.odometryTranslationSigma, 0, 100},
+        {"odometry_rotation_sigma_deg", &c.graph.odometryRotationSigmaDeg, 0, 180}}},
   };
 }
 

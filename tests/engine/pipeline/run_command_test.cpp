@@ -44,12 +44,27 @@ TEST(RunCommand, RealLogWritesEveryOutput) {
   for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
 }
 
-TEST(RunCommand, WithoutNoPriorSaysPriorsAreNotAvailable) {
-  const fs::path out = test::freshOutputDir("run_prior") / "o";
+TEST(RunCommand, RealLogWithPriorsWritesTheOptimizedTrajectory) {
+  const fs::path out = test::freshOutputDir("run_prior");
   const auto r = test::runHdprior("run " + test::sharedLog().string() + " --out " + out.string());
-  EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("priors are not available yet"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("optimized ATE rmse"), std::string::npos) << r.out;
+  EXPECT_EQ(readTum(out / "optimized.tum").size(), 2u);
+  std::ifstream in(out / "metrics.json");
+  const auto m = nlohmann::json::parse(in);
+  EXPECT_TRUE(m["priors"].get<bool>());
+  const auto& matches = m["matches"];
+  EXPECT_EQ(matches["accepted"].get<int>() + matches["degenerate"].get<int>() + matches["rejected"].get<int>(),
+            m["keyframes"].get<int>());
+  // The shared real sweep matches within half a metre of the ground truth (README: along-road offset).
+  EXPECT_LT(m["optimized"]["ate_translation_m"]["max"].get<double>(), 0.5);
+  for (const char* stage : {"odometry_s", "road_points_s", "match_s", "graph_s", "pipeline_s"}) {
+    EXPECT_GT(m["timing"][stage].get<double>(), 0.0) << stage;
+  }
+  std::ifstream kin(out / "keyframes.json");
+  const auto k = nlohmann::json::parse(kin);
+  EXPECT_TRUE(k[0].contains("match"));
+  EXPECT_TRUE(k[0].contains("optimized_city_T_ego"));
 }
 
 TEST(RunCommand, LogWithoutSweepsIsOneLineExit2) {

@@ -1,0 +1,70 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/eval/trajectory_errors.h"
+#include "engine/geom/pose_trajectory.h"
+#include "engine/graph/pose_graph.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/odom/odometry.h"
+#include "engine/pipeline/config.h"
+#include "engine/pipeline/prior_stage.h"
+
+namespace hdprior {
+
+struct PipelineOptions {
+  bool priors = true;     // false: lidar odometry alone
+  double mapVoxel = 0.2;  // metres, of the global map
+};
+
+struct StageTimes {
+  double odometryS = 0, roadPointsS = 0, matchS = 0, graphS = 0;  // the pipeline proper
+  double pipelineS = 0;  // all of it, per sweep as it would run online, including reading sweeps
+  double mapS = 0;       // rebuilding the global map afterwards
+};
+
+// A whole log through the pipeline: lidar odometry anchored at the first ground-truth pose, and with
+// priors the HD-map prior stage and pose graph, whose optimised keyframes correct every sweep's pose.
+struct PipelineRun {
+  std::unique_ptr<Odometry> odometry;
+  SE3 cityTOdom = SE3::Identity();  // the first ground-truth pose
+  PoseTrajectory groundTruth;       // city_T_ego at the sweep timestamps it covers
+  PoseTrajectory estimate;          // odometry, city_T_ego at every sweep
+  PoseTrajectory optimized;         // with priors: every sweep corrected by the pose graph; else empty
+  std::vector<KeyframeMatch> matches;  // with priors: one per keyframe
+  std::vector<SE3> optimizedKeyframes;
+  SolveSummary finalSolve;
+  std::vector<Eigen::Vector3f> mapPoints;  // voxelised keyframe sweeps at the final poses, city frame
+  std::vector<float> mapIntensity;
+  StageTimes times;
+  size_t maxLocalMapPoints = 0;
+
+  bool hasPriors() const { return !optimized.empty(); }
+  const PoseTrajectory& final() const { return hasPriors() ? optimized : estimate; }
+};
+
+// progress(done, total) is called after each sweep. Throws Error naming the sweep file for a bad or
+// empty sweep, or the log when it has no sweeps, its poses do not cover the first sweep, or (with
+// priors) its map lacks what the priors need.
+PipelineRun runPipeline(const ArgoverseLog& log, const Config& config, const PipelineOptions& options = {},
+                        const std::function<void(size_t, size_t)>& progress = {});
+
+struct MatchCounts {
+  size_t accepted = 0, degenerate = 0, rejected = 0;
+};
+
+// The metrics of a run, anchored at the first pose (as the paper's table), and for the odometry,
+// when there are at least 3 poses, the labelled SE(3), Sim(3) and 4-DOF alignments.
+struct RunMetrics {
+  TrajectoryEvaluation odometry;
+  std::optional<TrajectoryEvaluation> optimized;
+  std::vector<TrajectoryEvaluation> odometryAligned;
+  MatchCounts matches;
+};
+RunMetrics evaluateRun(const PipelineRun& run);
+
+}  // namespace hdprior

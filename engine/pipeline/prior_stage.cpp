@@ -1,0 +1,105 @@
+#include "engine/pipeline/prior_stage.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "engine/error.h"
+#include "engine/geom/se2.h"
+#include "engine/lidar/sweep_road_points.h"
+#include "engine/map/hd_map.h"
+#include "engine/match/map_matcher.h"
+#include "engine/odom/odometry.h"
+
+namespace hdprior {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The SE(2) pose of b in a's frame.
+Eigen::Vector3d planarBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double c = std::cos(a.z()), s = std::sin(a.z());
+  const Eigen::Vector2d d = b.head<2>() - a.head<2>();
+  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), std::remainder(b.z() - a.z(), 2.0 * std::numbers::pi)};
+}
+
+}  // namespace
+
+Matrix6d odometryInformation(const Eigen::Matrix<double, 6, 6>& relativeCovariance, const PoseGraphOptions& options) {
+  // [v, w] -> [w, v]: the between-factor's residual is [rotation, translation].
+  Matrix6d covariance;
+  covariance << relativeCovariance.bottomRightCorner<3, 3>(), relativeCovariance.bottomLeftCorner<3, 3>(),
+      relativeCovariance.topRightCorner<3, 3>(), relativeCovariance.topLeftCorner<3, 3>();
+  const double rotation = options.odometryRotationSigmaDeg * std::numbers::pi / 180.0;
+  covariance.diagonal().head<3>().array() += rotation * rotation;
+  covariance.diagonal().tail<3>().array() += options.odometryTranslationSigma * options.odometryTranslationSigma;
+  // A registration that found too little overlap reports no covariance: trust it weakly.
+  if (!(covariance.diagonal().minCoeff() > 0.0) || !covariance.allFinite()) return Matrix6d::Identity() * 1e-2;
+  return covariance.inverse();
+}
+
+PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom)
+    : map_(map), config_(config), cityTOdom_(cityTOdom), matcher_(std::make_unique<MapMatcher>(map, config.match)),
+      graph_(config.graph) {
+  if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
+}
+
+PriorStage::~PriorStage() = default;
+
+SE3 PriorStage::predictedPose(const Keyframe& keyframe) const {
+  if (graph_.size() == 0) return cityTOdom_ * keyframe.odomTEgo;
+  return graph_.pose(graph_.size() - 1) * keyframe.previousTThis;
+}
+
+std::vector<Eigen::Vector2d> PriorStage::roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const {
+  const Keyframe& kf = odometry.keyframes().back();
+  const std::vector<size_t> frames = config_.submapRoadPoints ? kf.submapFrames : std::vector<size_t>{kf.frame};
+  const Eigen::Vector3d keyframePlanar = planarPose(cityTOdom_ * kf.odomTEgo);
+  std::vector<std::shared_ptr<const LidarSweep>> sweeps;
+  std::vector<SubmapSweep> submap;
+  for (size_t f : frames) {
+    const SE3 cityTSweep = cityTOdom_ * odometry.frames()[f].odomTEgo;
+    sweeps.push_back(sweepOf(f));
+    submap.push_back({sweeps.back().get(), levelRotation(cityTSweep), planarBetween(keyframePlanar, planarPose(cityTSweep))});
+  }
+  return submapRoadPoints(submap, config_.roadPoints);
+}
+
+void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
+  const Keyframe& kf = odometry.keyframes().back();
+  KeyframeMatch m;
+  m.keyframe = odometry.keyframes().size() - 1;
+  m.frame = kf.frame;
+  m.timestampNs = kf.timestampNs;
+  const SE3 odometryPose = cityTOdom_ * kf.odomTEgo;
+  m.predicted = predictedPose(kf);
+
+  auto start = std::chrono::steady_clock::now();
+  const std::vector<Eigen::Vector2d> points = roadPoints(odometry, sweepOf);
+  times_.roadPointsS += secondsSince(start);
+
+  start = std::chrono::steady_clock::now();
+  m.match = matcher_->match(points, planarPose(m.predicted));
+  m.hasPrior = m.match.status != MatchStatus::Rejected;
+  if (m.hasPrior) m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);
+  times_.matchS += secondsSince(start);
+
+  start = std::chrono::steady_clock::now();
+  const size_t k = graph_.addKeyframe(kf.timestampNs, odometryPose, m.predicted);
+  if (k > 0) graph_.addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, config_.graph));
+  if (m.hasPrior) graph_.addPrior(k, m.prior);
+  graph_.solve(true);
+  times_.graphS += secondsSince(start);
+  matches_.push_back(std::move(m));
+}
+
+SolveSummary PriorStage::finish() {
+  const auto start = std::chrono::steady_clock::now();
+  const SolveSummary s = graph_.solve(false);
+  times_.graphS += secondsSince(start);
+  return s;
+}
+
+}  // namespace hdprior

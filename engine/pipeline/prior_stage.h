@@ -1,0 +1,76 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "engine/geom/pose_trajectory.h"
+#include "engine/geom/se3.h"
+#include "engine/graph/pose_graph.h"
+#include "engine/graph/pose_prior.h"
+#include "engine/io/lidar_sweep.h"
+#include "engine/match/match_result.h"
+#include "engine/pipeline/config.h"
+
+namespace hdprior {
+
+class HdMap;
+class MapMatcher;
+class Odometry;
+struct Keyframe;
+
+// What the prior stage did with one keyframe.
+struct KeyframeMatch {
+  size_t keyframe = 0, frame = 0;
+  int64_t timestampNs = 0;
+  SE3 predicted = SE3::Identity();  // the odometry pose corrected by the graph so far: the match's start
+  MatchResult match;
+  bool hasPrior = false;            // accepted or degenerate: a prior went into the graph
+  PosePrior prior;
+};
+
+struct PriorStageTimes {
+  double roadPointsS = 0, matchS = 0, graphS = 0;
+};
+
+// The paper's HD-map prior stage, fed keyframe by keyframe as the odometry makes them: the keyframe's
+// road points (its sweep, or its key-frame sub-map), scan-to-map matching from the odometry pose
+// corrected by the graph so far, the pose prior (yaw, x, y from the match, z from the ground
+// height) for accepted and degenerate matches, the odometry between-factor, and an incremental,
+// warm-started solve. finish() is the final batch solve.
+class PriorStage {
+ public:
+  using SweepOf = std::function<std::shared_ptr<const LidarSweep>(size_t frame)>;
+
+  // cityTOdom places the odometry frame in the city (the first ground-truth pose).
+  PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom);
+  ~PriorStage();
+  PriorStage(const PriorStage&) = delete;
+  PriorStage& operator=(const PriorStage&) = delete;
+
+  // The odometry's newest keyframe; sweepOf loads the sweep of an odometry frame.
+  void addKeyframe(const Odometry& odometry, const SweepOf& sweepOf);
+  SolveSummary finish();
+
+  const std::vector<KeyframeMatch>& matches() const { return matches_; }
+  const PoseGraph& graph() const { return graph_; }
+  const PriorStageTimes& times() const { return times_; }
+
+ private:
+  std::vector<Eigen::Vector2d> roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const;
+  SE3 predictedPose(const Keyframe& keyframe) const;
+
+  const HdMap& map_;
+  Config config_;
+  SE3 cityTOdom_;
+  std::unique_ptr<MapMatcher> matcher_;
+  PoseGraph graph_;
+  std::vector<KeyframeMatch> matches_;
+  PriorStageTimes times_;
+};
+
+// The information of an odometry between-factor (residual order [rotation, translation]) from the
+// keyframe's relative covariance (body [v, w]) plus the graph options' floors.
+Matrix6d odometryInformation(const Eigen::Matrix<double, 6, 6>& relativeCovariance, const PoseGraphOptions& options);
+
+}  // namespace hdprior

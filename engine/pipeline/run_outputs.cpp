@@ -1,0 +1,111 @@
+#include "engine/pipeline/run_outputs.h"
+
+#include <numbers>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/io/file_bytes.h"
+#include "engine/io/ply_writer.h"
+#include "engine/io/tum_trajectory.h"
+
+namespace hdprior {
+namespace {
+
+using nlohmann::json;
+
+json poseJson(const SE3& T) {
+  const Eigen::Quaterniond q(T.rotation());
+  return {{"t", {T.translation().x(), T.translation().y(), T.translation().z()}}, {"q_xyzw", {q.x(), q.y(), q.z(), q.w()}}};
+}
+
+json planarJson(const Eigen::Vector3d& p) { return {{"x", p.x()}, {"y", p.y()}, {"yaw_deg", p.z() * 180.0 / std::numbers::pi}}; }
+
+json matrixJson(const Eigen::Matrix3d& m) {
+  return {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}};
+}
+
+json statsJson(const ErrorStats& s) {
+  return {{"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"rmse", s.rmse}, {"std", s.std}, {"max", s.max}};
+}
+
+json rpeJson(const RpeResult& r) {
+  if (r.segments == 0) return {{"segment_m", r.length}, {"segments", 0}, {"note", "trajectory shorter than the segment"}};
+  return {{"segment_m", r.length}, {"segments", r.segments}, {"translation_percent", r.translationPercent},
+          {"yaw_deg_per_100m", r.yawDegPer100m}, {"rotation_deg_per_100m", r.rotationDegPer100m}};
+}
+
+json evaluationJson(const TrajectoryEvaluation& e) {
+  return {{"alignment", e.label}, {"scale", e.scale}, {"path_length_m", e.pathLength},
+          {"ate_translation_m", statsJson(e.ate.translation)}, {"ate_rotation_deg", statsJson(e.ate.rotationDeg)},
+          {"rpe_10m", rpeJson(e.rpe10)}, {"rpe_100m", rpeJson(e.rpe100)}};
+}
+
+json matchJson(const KeyframeMatch& k) {
+  const MatchResult& r = k.match;
+  return {{"status", toString(r.status)}, {"reason", r.reason}, {"road_points", r.points},
+          {"initial", planarJson(r.initial)}, {"estimate", planarJson(r.estimate)},
+          {"covariance_x_y_yaw", matrixJson(r.covariance)}, {"score", r.score}, {"score_per_point", r.scorePerPoint},
+          {"inlier_ratio", r.inlierRatio}, {"gate_chi2", r.gateChi2}, {"observable_directions", r.observableDirections},
+          {"iterations", r.iterations}, {"time_ms", r.timeMs}, {"prior", k.hasPrior}};
+}
+
+json keyframesJson(const PipelineRun& run) {
+  json keyframes = json::array();
+  for (size_t k = 0; k < run.odometry->keyframes().size(); ++k) {
+    const Keyframe& kf = run.odometry->keyframes()[k];
+    std::vector<double> cov(kf.relativeCovariance.data(), kf.relativeCovariance.data() + 36);
+    json j = {{"index", k}, {"frame", kf.frame}, {"timestamp_ns", kf.timestampNs},
+              {"city_T_ego", poseJson(run.cityTOdom * kf.odomTEgo)}, {"previous_T_this", poseJson(kf.previousTThis)},
+              {"relative_covariance_v_w", cov}, {"submap_frames", kf.submapFrames}};
+    if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
+    if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
+    keyframes.push_back(j);
+  }
+  return keyframes;
+}
+
+json timingJson(const StageTimes& t, size_t sweeps) {
+  return {{"odometry_s", t.odometryS}, {"road_points_s", t.roadPointsS}, {"match_s", t.matchS}, {"graph_s", t.graphS},
+          {"pipeline_s", t.pipelineS}, {"sweeps_per_s", t.pipelineS > 0 ? double(sweeps) / t.pipelineS : 0.0},
+          {"global_map_s", t.mapS}};
+}
+
+json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& metrics) {
+  json aligned = json::array();
+  for (const auto& e : metrics.odometryAligned) aligned.push_back(evaluationJson(e));
+  json m = {{"log", log.id()},
+            {"priors", run.hasPriors()},
+            {"sweeps", run.estimate.size()},
+            {"keyframes", run.odometry->keyframes().size()},
+            {"timing", timingJson(run.times, run.estimate.size())},
+            {"max_local_map_points", run.maxLocalMapPoints},
+            {"map_points", run.mapPoints.size()},
+            {"odometry", evaluationJson(metrics.odometry)},
+            {"odometry_aligned", aligned}};
+  if (metrics.optimized) {
+    m["optimized"] = evaluationJson(*metrics.optimized);
+    m["matches"] = {{"accepted", metrics.matches.accepted}, {"degenerate", metrics.matches.degenerate},
+                    {"rejected", metrics.matches.rejected}};
+    m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
+                        {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};
+  }
+  return m;
+}
+
+}  // namespace
+
+void writeRunOutputs(const std::filesystem::path& dir, const ArgoverseLog& log, const PipelineRun& run,
+                     const RunMetrics& metrics) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!std::filesystem::is_directory(dir)) throw Error(dir.string(), "cannot create the output folder");
+  writeTum(dir / "groundtruth.tum", run.groundTruth);
+  writeTum(dir / "odometry.tum", run.estimate);
+  if (run.hasPriors()) writeTum(dir / "optimized.tum", run.optimized);
+  writeFileAtomically(dir / "keyframes.json", keyframesJson(run).dump(1) + "\n");
+  writeFileAtomically(dir / "metrics.json", metricsJson(log, run, metrics).dump(2) + "\n");
+  writePly(dir / "map.ply", run.mapPoints, run.mapIntensity);
+}
+
+}  // namespace hdprior
