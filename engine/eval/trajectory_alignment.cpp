@@ -10,7 +10,7 @@ namespace hdprior {
 
 std::string alignmentLabel(AlignmentMode mode) {
   switch (mode) {
-    case AlignmentMode::None: return "none (anchored at the first ground-truth pose)";
+    case AlignmentMode::None: return "none (city frame; runs start at the first ground-truth pose)";
     case AlignmentMode::SE3: return "SE(3) Umeyama";
     case AlignmentMode::Sim3: return "Sim(3) Umeyama";
     case AlignmentMode::FourDof: return "4-DOF (yaw + translation)";
@@ -65,7 +65,6 @@ Alignment alignTrajectories(const std::vector<SE3>& gt, const std::vector<SE3>& 
   Alignment a;
   switch (mode) {
     case AlignmentMode::None:
-      a.transform = gt.front() * est.front().inverse();
       return a;
     case AlignmentMode::FourDof:
       return fourDof(gt, est);

@@ -7,12 +7,12 @@
 namespace hdprior {
 
 // How an estimated trajectory is put into the ground truth's frame before errors are measured.
-// None: anchored at the first ground-truth pose (the paper's protocol: the start is given in the map
-// frame), no further alignment. SE3 / Sim3: Umeyama least squares on positions (Sim3 also scales).
+// None: no alignment; errors in the city frame (the paper's protocol: runs start at the first
+// ground-truth pose, and priors may move even that). SE3 / Sim3: Umeyama least squares on positions (Sim3 also scales).
 // FourDof: yaw + translation, the right one for gravity-aligned lidar.
 enum class AlignmentMode { None, SE3, Sim3, FourDof };
 
-std::string alignmentLabel(AlignmentMode mode);  // "none (anchored at first pose)", ...
+std::string alignmentLabel(AlignmentMode mode);  // "none (city frame; ...)", ...
 AlignmentMode parseAlignmentMode(const std::string& name);  // none|se3|sim3|4dof; throws Error
 
 // The similarity gt_T_est (scale s): an estimate pose P becomes (s R, t) * P with rotation R * R_P.

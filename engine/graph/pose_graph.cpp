@@ -66,7 +66,7 @@ SolveSummary PoseGraph::solve(bool incremental) {
   // Gauge: without any prior, the first keyframe anchors the graph.
   const bool anyPrior = std::any_of(impl_->hasPrior.begin(), impl_->hasPrior.end(), [](bool b) { return b; });
   for (size_t i = 0; i < size(); ++i) {
-    const bool fixed = (i == 0 && !anyPrior) ||
+    const bool fixed = (i == 0 && (options_.fixFirst || !anyPrior)) ||
                        (incremental && options_.incrementalWindow > 0 && i + size_t(options_.incrementalWindow) < size());
     double* blocks[2] = {impl_->q[i]->coeffs().data(), impl_->t[i]->data()};
     for (double* b : blocks) {

@@ -17,6 +17,7 @@ struct PoseGraphOptions {
   double priorHuber = 1.0;     // robust (Huber) loss on prior residuals, in whitened units
   int maxIterations = 50;      // per solve
   int incrementalWindow = 0;   // 0: every keyframe is free in incremental solves; else only the last N
+  bool fixFirst = true;        // the first keyframe is the given start (paper: the first ground-truth pose)
   // Added (as variances) to the odometry's relative covariance per keyframe: scan-to-map covariances
   // count every residual as independent and ignore the local map's own drift.
   double odometryTranslationSigma = 0.0;  // metres
@@ -32,7 +33,7 @@ struct SolveSummary {
 // The pose graph of the paper's eq. (main pgo) in Ceres: keyframe poses city_T_ego,
 // odometry between-factors (SE(3) residual [Log(R_meas^-1 R_i^-1 R_j); R_i^-1 (t_j - t_i) - t_meas]
 // whitened by their information) and HD-map prior factors (yaw, x, y, z) with a Huber loss.
-// The first keyframe is held fixed when it has no prior. Solves warm-start from the current
+// The first keyframe is held fixed (options.fixFirst, or when no keyframe has a prior). Solves warm-start from the current
 // estimates, so calling solve() after each new keyframe is the incremental use; the last call is
 // the final batch solve.
 class PoseGraph {

@@ -1,6 +1,10 @@
 #include "engine/graph/pose_prior.h"
 
 #include <cmath>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include "engine/geom/se2.h"
 #include "engine/map/ground_height.h"
@@ -12,6 +16,19 @@ double priorAltitude(const GroundHeight& ground, double x, double y, double egoH
   return ground.bilinearAt(Eigen::Vector2d(x, y)) + egoHeight;
 }
 
+Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
+  const double largest = std::max(eig.eigenvalues().maxCoeff(), 0.0);
+  Eigen::Matrix3d observed = Eigen::Matrix3d::Zero();  // projector onto the observed directions
+  for (int i = 0; i < 3; ++i) {
+    if (eig.eigenvalues()(i) > 1e-9 * largest && largest > 0.0) observed += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
+  }
+  const double yaw = options.minSigmaYawDeg * std::numbers::pi / 180.0;
+  const Eigen::Matrix3d floor = Eigen::Vector3d(options.minSigmaXY * options.minSigmaXY, options.minSigmaXY * options.minSigmaXY, yaw * yaw).asDiagonal();
+  const Eigen::Matrix3d covariance = information.completeOrthogonalDecomposition().pseudoInverse() + observed * floor * observed;
+  return observed * covariance.completeOrthogonalDecomposition().pseudoInverse() * observed;
+}
+
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
                         const PosePriorOptions& options) {
   const Eigen::Vector3d& e = match.estimate;
@@ -21,8 +38,14 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   prior.pose.translation() = Eigen::Vector3d(e.x(), e.y(), std::isfinite(z) ? z : odometryPose.translation().z());
   // Match information is over (x, y, yaw); reorder to (yaw, x, y) and add z.
   const int order[3] = {1, 2, 0};  // match index -> prior index
+  Eigen::Matrix3d information = flooredInformation(match.information, options);
+  if (!options.alongTrack) {
+    const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - along * along.transpose();
+    information = P * information * P;
+  }
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) prior.information(order[r], order[c]) = match.information(r, c);
+    for (int c = 0; c < 3; ++c) prior.information(order[r], order[c]) = information(r, c);
   }
   prior.information(3, 3) = std::isfinite(z) ? 1.0 / (options.altitudeSigma * options.altitudeSigma) : 0.0;
   return prior;

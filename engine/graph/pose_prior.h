@@ -19,11 +19,22 @@ struct PosePrior {
 struct PosePriorOptions {
   double egoHeight = 0.32;      // the ego origin above the ground surface (Argoverse: about 0.32 m)
   double altitudeSigma = 0.10;  // metres: the ground-height raster's accuracy at a known (x, y)
+  // Added to the match's covariance in the directions it observes: the Laplace covariance of an NDT
+  // match counts every road point as an independent observation and misses its biases.
+  double minSigmaXY = 0.0;       // metres
+  double minSigmaYawDeg = 0.0;
+  // false: the prior constrains only the lateral position and yaw (and z), never the position along
+  // the vehicle's heading, where NDT matches against a road's drivable area are weakest.
+  bool alongTrack = true;
 };
 
 // The altitude z* of the ego origin at (x, y): ground height (bilinear) plus egoHeight; NaN
 // outside the raster's region of interest.
 double priorAltitude(const GroundHeight& ground, double x, double y, double egoHeight);
+
+// The match's information over (x, y, yaw) with the options' floors added to its covariance in the
+// directions the match observes; unobservable directions keep zero information.
+Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options);
 
 // Builds the prior from a match (its estimate and information over x, y, yaw) and the
 // odometry pose that supplies roll and pitch. Without altitude (NaN) z gets no information.

@@ -10,6 +10,16 @@
 namespace hdprior {
 namespace {
 
+// The second sweep has no velocity to predict from and may start a metre or more off (a log that
+// begins in motion): give it a wider basin and more re-association rounds.
+RegistrationOptions startRegistration(const RegistrationOptions& ro, size_t framesSoFar) {
+  if (framesSoFar != 1) return ro;
+  RegistrationOptions wide = ro;
+  wide.outerIterations = 3 * ro.outerIterations;
+  wide.maxCorrespondence = 2.0 * ro.maxCorrespondence;
+  return wide;
+}
+
 constexpr double kDefaultPeriodNs = 1e8;
 
 std::vector<Eigen::Vector3f> transformed(const std::vector<Eigen::Vector3f>& points, const SE3& T) {
@@ -76,7 +86,7 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
     if (ro.scanToScanGuess && !lastEdges_.empty()) {
       guess = registerFeatures(edges, planes, lastEdges_, lastPlanes_, guess, ro).mapTEgo;
     }
-    RegistrationResult r = registerFeatures(edges, planes, edgeMap_, planeMap_, guess, ro);
+    RegistrationResult r = registerFeatures(edges, planes, edgeMap_, planeMap_, guess, startRegistration(ro, frames_.size()));
     if (deskew) {
       // Re-deskew with the estimated motion and refine once from the estimate.
       frame.sweepMotion = scaleMotion(previous.odomTEgo.inverse() * r.mapTEgo, frame.periodNs / sinceLast);

@@ -40,7 +40,7 @@ TEST(RunCommand, RealLogWritesEveryOutput) {
   const auto m = nlohmann::json::parse(in);
   EXPECT_EQ(m["sweeps"], 2);
   EXPECT_LT(m["odometry"]["ate_translation_m"]["max"].get<double>(), 0.05);
-  EXPECT_EQ(m["odometry"]["alignment"], "none (anchored at the first ground-truth pose)");
+  EXPECT_EQ(m["odometry"]["alignment"], "none (city frame; runs start at the first ground-truth pose)");
   for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
 }
 
