@@ -13,5 +13,6 @@ int runRun(const std::vector<std::string>& args);
 int runSim(const std::vector<std::string>& args);
 int runMatch(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
+int runDemo(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app
