@@ -84,14 +84,17 @@ int runMatch(const std::vector<std::string>& args) {
   // Roll and pitch come from the ground truth here (the pipeline takes them from odometry).
   const SE3 truth3 = log.cityTEgo().at(stamp);
   const Eigen::Vector3d truth = planarPose(truth3);
-  const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*log.sweep(size_t(frame)), levelRotation(truth3), config.roadPoints);
+  const auto sweep = log.sweep(size_t(frame));
+  const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
+  const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), config.roadPoints);
   const Eigen::Vector3d initial = offsetPose(truth, offset);
   MapMatcher matcher(map, options);
-  const MatchResult r = matcher.match(points, initial);
+  const MatchResult r = matcher.match(points.road, initial, points.curb);
   const Eigen::Vector3d e = planarError(truth, r.estimate);
 
   std::printf("{\n  \"log\": \"%s\",\n  \"frame\": %lld,\n  \"timestamp_ns\": %lld,\n  \"backend\": \"%s\",\n",
               log.id().c_str(), frame, (long long)stamp, options.backend == MatchBackend::Ndt2d ? "ndt2d" : "pcl");
+  std::printf("  \"curb_points\": %zu,\n", points.curb.size());
   std::printf("  \"road_points\": %zu,\n  \"truth\": %s,\n  \"initial\": %s,\n  \"estimate\": %s,\n", r.points,
               pose(truth).c_str(), pose(initial).c_str(), pose(r.estimate).c_str());
   std::printf("  \"error\": {\"along\": %.4f, \"lateral\": %.4f, \"yaw_deg\": %.4f},\n", e.x(), e.y(), e.z() / kDeg);

@@ -75,7 +75,11 @@ class RingWalk {
       const Eigen::Vector3d& b = points_[members_[k]];
       if ((b.head<2>() - points_[members_[path.back()]].head<2>()).norm() > o_.maxGap) return;
       if (!agrees(b, path)) {
-        if (++failures > o_.maxSkipped) return;
+        if (++failures > o_.maxSkipped) {
+          // Ended by a height step, not a gap: the last road point lies at a curb.
+          if (path.size() > 1) road[members_[path.back()]] = kCurbPoint;
+          return;
+        }
         continue;
       }
       failures = 0;

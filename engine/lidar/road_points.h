@@ -27,8 +27,11 @@ struct RoadPointOptions {
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
 };
 
-// One flag per point: 1 = road. `ring` is each point's laser number, `ground` its ground
-// flag (segmentGround); all three have the points' length.
+inline constexpr uint8_t kRoadPoint = 1;
+inline constexpr uint8_t kCurbPoint = 2;  // a road point where the walk ended at a height step (a curb)
+
+// One flag per point: 0 = not road, kRoadPoint, or kCurbPoint (also road). `ring` is each point's
+// laser number, `ground` its ground flag (segmentGround); all three have the points' length.
 std::vector<uint8_t> extractRoadPoints(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ring,
                                        std::span<const uint8_t> ground, const RoadPointOptions& options = {});
 

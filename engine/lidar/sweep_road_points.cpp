@@ -9,10 +9,10 @@ namespace hdprior {
 std::vector<Eigen::Vector2d> sweepRoadPoints(const LidarSweep& sweep, const Eigen::Matrix3d& egoLevel,
                                              const SweepRoadPointOptions& options) {
   const SubmapSweep one{&sweep, egoLevel, Eigen::Vector3d::Zero()};
-  return submapRoadPoints(std::span(&one, 1), options);
+  return submapRoadPoints(std::span(&one, 1), options).road;
 }
 
-std::vector<Eigen::Vector2d> submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options) {
+PlanarRoadPoints submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options) {
   std::vector<Eigen::Vector3d> all;
   std::vector<uint8_t> allRoad;
   for (const SubmapSweep& s : sweeps) {
@@ -24,7 +24,12 @@ std::vector<Eigen::Vector2d> submapRoadPoints(std::span<const SubmapSweep> sweep
     for (const Eigen::Vector3d& p : points) all.push_back(R * p + t);
     allRoad.insert(allRoad.end(), road.begin(), road.end());
   }
-  return planarPoints(all, allRoad, options.thinCell);
+  PlanarRoadPoints out;
+  out.road = planarPoints(all, allRoad, options.thinCell);
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (allRoad[i] == kCurbPoint) out.curb.emplace_back(all[i].x(), all[i].y());
+  }
+  return out;
 }
 
 }  // namespace hdprior

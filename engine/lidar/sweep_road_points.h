@@ -30,7 +30,12 @@ struct SubmapSweep {
   Eigen::Vector3d keyframeTSweep = Eigen::Vector3d::Zero();
 };
 
+struct PlanarRoadPoints {
+  std::vector<Eigen::Vector2d> road;  // thinned
+  std::vector<Eigen::Vector2d> curb;  // the road points at curbs (kCurbPoint), all of them
+};
+
 // The road points of several sweeps in the key frame's level frame, thinned together.
-std::vector<Eigen::Vector2d> submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options = {});
+PlanarRoadPoints submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options = {});
 
 }  // namespace hdprior

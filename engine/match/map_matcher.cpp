@@ -6,6 +6,7 @@
 
 #include "engine/error.h"
 #include "engine/map/hd_map.h"
+#include "engine/match/curb_refinement.h"
 #include "engine/match/match_assessment.h"
 #include "engine/match/ndt_optimizer.h"
 #include "engine/match/pcl_ndt_backend.h"
@@ -42,7 +43,8 @@ MapMatcher::MapMatcher(const HdMap& map, MatchOptions options) : map_(map), opti
 
 MapMatcher::~MapMatcher() = default;
 
-MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial) {
+MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial,
+                              std::span<const Eigen::Vector2d> curbPoints) {
   const auto start = std::chrono::steady_clock::now();
   const auto deadline = start + std::chrono::microseconds(int64_t(options_.timeBudgetMs * 1000.0));
   MatchResult r;
@@ -60,6 +62,13 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eig
       r.estimate = opt.pose;
       r.iterations = opt.iterations;
       timedOut = opt.timedOut;
+    }
+    if (options_.curbRefinement && !timedOut) {
+      const CurbRefinementOptions co{.huber = options_.curbHuber, .maxDistance = options_.curbMaxDistance,
+                                     .minPoints = options_.minCurbPoints, .lateralOnly = options_.curbLateralOnly};
+      const CurbRefinement c = refineOnCurbs(map_.boundaryDistance(), curbPoints, r.estimate, co);
+      r.estimate = c.pose;
+      r.iterations += c.iterations;
     }
   } else {
     r.estimate = initial;

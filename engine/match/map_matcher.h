@@ -27,7 +27,9 @@ class MapMatcher {
   MapMatcher& operator=(const MapMatcher&) = delete;
 
   const MatchOptions& options() const { return options_; }
-  MatchResult match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial);
+  // curbPoints (road points at curbs, same frame) refine the estimate when options().curbRefinement.
+  MatchResult match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial,
+                    std::span<const Eigen::Vector2d> curbPoints = {});
 
  private:
   const HdMap& map_;

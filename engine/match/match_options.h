@@ -34,6 +34,13 @@ struct MatchOptions {
   int pclMaxIterations = 35;
   double pclTargetSpacing = 0.2;        // drivable points of the map are thinned to this grid
 
+  // --- Curb refinement (both backends): the curb points seen are put on the drivable boundary ---
+  bool curbRefinement = true;
+  double curbHuber = 0.15;              // metres
+  double curbMaxDistance = 1.0;         // metres from the boundary at the NDT estimate
+  int minCurbPoints = 20;
+  bool curbLateralOnly = true;          // curbs correct lateral position and yaw only
+
   // --- Covariance and acceptance (both backends) ---
   // Points in one NDT cell are not independent observations: the Laplace information
   // -H / (|d1| d2) is scaled by (distinct cells hit / points).

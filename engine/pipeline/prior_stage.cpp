@@ -53,7 +53,7 @@ SE3 PriorStage::predictedPose(const Keyframe& keyframe) const {
   return graph_.pose(graph_.size() - 1) * keyframe.previousTThis;
 }
 
-std::vector<Eigen::Vector2d> PriorStage::roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const {
+PlanarRoadPoints PriorStage::roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const {
   const Keyframe& kf = odometry.keyframes().back();
   const std::vector<size_t> frames = config_.submapRoadPoints ? kf.submapFrames : std::vector<size_t>{kf.frame};
   const Eigen::Vector3d keyframePlanar = planarPose(cityTOdom_ * kf.odomTEgo);
@@ -77,11 +77,11 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   m.predicted = predictedPose(kf);
 
   auto start = std::chrono::steady_clock::now();
-  const std::vector<Eigen::Vector2d> points = roadPoints(odometry, sweepOf);
+  const PlanarRoadPoints points = roadPoints(odometry, sweepOf);
   times_.roadPointsS += secondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  m.match = matcher_->match(points, planarPose(m.predicted));
+  m.match = matcher_->match(points.road, planarPose(m.predicted), points.curb);
   m.hasPrior = m.match.status != MatchStatus::Rejected;
   if (m.hasPrior) m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);
   times_.matchS += secondsSince(start);

@@ -9,6 +9,7 @@
 #include "engine/graph/pose_graph.h"
 #include "engine/graph/pose_prior.h"
 #include "engine/io/lidar_sweep.h"
+#include "engine/lidar/sweep_road_points.h"
 #include "engine/match/match_result.h"
 #include "engine/pipeline/config.h"
 
@@ -57,7 +58,7 @@ class PriorStage {
   const PriorStageTimes& times() const { return times_; }
 
  private:
-  std::vector<Eigen::Vector2d> roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const;
+  PlanarRoadPoints roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const;
   SE3 predictedPose(const Keyframe& keyframe) const;
 
   const HdMap& map_;

@@ -67,7 +67,7 @@ TEST(RoadPointsSim, PrecisionAndRecallAgainstSimulatorLabels) {
     const Counts c = measure(town, 10);
     std::printf("town %llu: road points precision %.4f, recall %.4f (false positives: %zu sidewalk/curb, %zu other ground, "
                 "%zu objects)\n", (unsigned long long)town, c.precision(), c.recall(), c.onSidewalk, c.onOtherGround, c.onObjects);
-    EXPECT_GT(c.precision(), 0.95) << "town " << town;
+    EXPECT_GT(c.precision(), 0.93) << "town " << town;
     EXPECT_GT(c.recall(), 0.8) << "town " << town;
   }
 }

@@ -196,3 +196,32 @@ TEST(MapMatcher, IsDeterministic) {
 
 }  // namespace
 }  // namespace hdprior
+
+namespace hdprior {
+
+// Parked cars hide the left third of a corridor: the region NDT is pulled towards the hidden
+// cells' centres; the right curb, which the lidar does see, puts the estimate back.
+TEST(MapMatcher, CurbsCorrectTheOcclusionBiasOfTheRegionNdt) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const Eigen::Vector3d truth(3.0, 0.0, 0.0);
+  std::vector<Eigen::Vector2d> points, curb;
+  for (const Eigen::Vector2d& p : ringRoadPoints(map.drivable(), truth)) {
+    if (p.y() < 1.5) points.push_back(p);  // the vehicle's frame is the city's, shifted by 3 m along
+  }
+  for (double x = -25.0; x <= 25.0; x += 0.5) curb.emplace_back(x, -4.99);  // at the curb face
+  MatchOptions ndtOnly;
+  ndtOnly.curbRefinement = false;
+  MapMatcher plain(map, ndtOnly), withCurbs(map, {});
+  const Eigen::Vector3d start = offsetPose(truth, {0.3, 0.4, 1.0 * kDeg});
+  const Eigen::Vector3d biased = planarError(truth, plain.match(points, start).estimate);
+  const MatchResult r = withCurbs.match(points, start, curb);
+  const Eigen::Vector3d e = planarError(truth, r.estimate);
+  std::printf("lateral error: region NDT %.3f m, with curbs %.4f m; yaw %.3f / %.4f deg\n", biased.y(), e.y(),
+              biased.z() / kDeg, e.z() / kDeg);
+  EXPECT_GT(std::abs(biased.y()), 0.1);
+  EXPECT_LT(std::abs(e.y()), 0.03);
+  EXPECT_LT(std::abs(e.z()), 0.05 * kDeg);
+  EXPECT_NEAR(e.x(), biased.x(), 1e-3);  // curbs never move the estimate along the road
+}
+
+}  // namespace hdprior
