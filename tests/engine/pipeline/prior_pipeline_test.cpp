@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <unistd.h>
+
 #include "engine/io/argoverse_log.h"
 #include "engine/pipeline/pipeline_run.h"
 #include "engine/sim/log_writer.h"
@@ -17,7 +19,8 @@ class PriorPipeline : public ::testing::Test {
     sim.townSeed = 1;
     sim.seed = 1;
     sim.seconds = 12.0;
-    sim.outDir = test::freshOutputDir("prior_pipeline");
+    // ctest runs each test in its own process, in parallel: one folder per process.
+    sim.outDir = test::freshOutputDir("prior_pipeline_" + std::to_string(::getpid()));
     log_ = std::make_unique<ArgoverseLog>(simulateLog(sim).dir);
   }
   static void TearDownTestSuite() { log_.reset(); }
