@@ -1,0 +1,86 @@
+#pragma once
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/pipeline/keyframe_inspection.h"
+#include "engine/pipeline/pipeline_run.h"
+
+namespace hdprior {
+
+class HdMap;
+
+// One log, its map and configuration, and every stage's results so far: the one object the CLI,
+// the app and the tests drive. step() advances one sweep (odometry, and at a keyframe the HD-map
+// prior stage with an incremental solve); run() goes to the end with progress and cancel;
+// optimize() is the batch solve on demand (with other prior and graph options if given);
+// inspectKeyframe() re-runs one keyframe's road points and match with the options being tuned.
+// Not thread-safe: one thread drives it at a time (the app runs it in a worker and reads it when
+// the worker is done).
+class Session {
+ public:
+  // map == nullptr or !options.priors: lidar odometry alone. Throws Error for a log without sweeps or
+  // whose poses do not cover the first sweep (the start), or a map without what the priors need.
+  Session(const ArgoverseLog& log, const HdMap* map, const Config& config, const PipelineOptions& options = {});
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  const ArgoverseLog& log() const { return log_; }
+  const Config& config() const { return config_; }
+  bool hasPriors() const { return priors_ != nullptr; }
+  size_t sweepCount() const;
+  size_t sweepsDone() const { return estimate_.size(); }
+  bool done() const { return sweepsDone() == sweepCount(); }
+
+  // One sweep. Throws Error naming the sweep file for a bad or empty sweep.
+  void step();
+  // Sweeps until the odometry makes a keyframe, or the end.
+  void stepKeyframe();
+  // Until the end; progress(done, total) after each sweep. Returns false when `cancel` was set
+  // (checked between sweeps; the session stays usable and can go on later).
+  bool run(const std::function<void(size_t, size_t)>& progress = {}, const std::atomic<bool>* cancel = nullptr);
+
+  // The batch solve of the graph as it stands (the final solve, or "optimise now" mid-way).
+  SolveSummary optimize();
+  // The same after rebuilding the graph from the keyframes and matches so far with other prior
+  // and graph options (the app's PGO panel); they become the session's options.
+  SolveSummary optimize(const PosePriorOptions& prior, const PoseGraphOptions& graph);
+
+  // Keyframe k's sub-map, road points and match re-computed with these options, from `start`
+  // (default: the pose the run's match started from). Changes nothing in the session.
+  KeyframeInspection inspectKeyframe(size_t k, const SweepRoadPointOptions& roadPoints, const MatchOptions& match,
+                                     const std::optional<Eigen::Vector3d>& start = std::nullopt) const;
+
+  const Odometry& odometry() const { return *odometry_; }
+  const SE3& cityTOdom() const { return cityTOdom_; }
+  const PoseTrajectory& groundTruth() const { return groundTruth_; }  // at the sweeps the poses cover
+  PoseTrajectory odometryTrajectory() const;   // city_T_ego of every sweep done
+  PoseTrajectory optimizedTrajectory() const;  // the same corrected by the graph (empty without priors)
+  const std::vector<KeyframeMatch>& matches() const;  // one per keyframe (empty without priors)
+  std::vector<SE3> keyframePoses() const;              // the graph's (or the odometry's) keyframe poses
+  const PoseGraph* graph() const;
+  const StageTimes& times() const { return times_; }
+
+  // The final batch solve, the corrected trajectory and the global map: the run as `hdprior run`
+  // writes it. The session is spent afterwards.
+  PipelineRun finish(double mapVoxel);
+
+ private:
+  const ArgoverseLog& log_;
+  const HdMap* map_;
+  Config config_;
+  SE3 cityTOdom_;
+  std::unique_ptr<Odometry> odometry_;
+  std::unique_ptr<PriorStage> priors_;
+  std::vector<SE3> estimate_;
+  PoseTrajectory groundTruth_;
+  StageTimes times_;
+  size_t maxLocalMapPoints_ = 0;
+};
+
+}  // namespace hdprior

@@ -1,0 +1,37 @@
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "engine/geom/pose_trajectory.h"
+#include "engine/match/cost_landscape.h"
+#include "engine/match/match_result.h"
+#include "engine/pipeline/keyframe_inspection.h"
+
+namespace hdprior {
+class Session;
+}
+
+namespace hdprior::render {
+
+// A keyframe along the trajectory, at its final pose, with what its match did.
+struct KeyframeMark {
+  size_t keyframe = 0, frame = 0;
+  SE3 pose = SE3::Identity();
+  std::optional<MatchStatus> status;  // none: odometry only
+};
+
+// What the pipeline and the tuning bench computed, for the analysis layers to draw (trajectories,
+// keyframes, the selected keyframe's points, match and cost landscape). Plain data; the app and
+// `hdprior snapshot` fill it from a Session.
+struct Analysis {
+  PoseTrajectory groundTruth, odometry, optimized;     // city_T_ego; empty when not computed
+  std::vector<double> odometryError, optimizedError;   // ATE translation per pose of odometry / optimized (NaN: no truth)
+  std::vector<KeyframeMark> keyframes;
+  std::optional<KeyframeInspection> inspection;        // the selected keyframe
+  std::optional<CostLandscape> landscape;              // around the inspection's match estimate
+};
+
+// The trajectories, per-pose errors and keyframes of a session as it stands.
+Analysis analysisOf(const Session& session);
+
+}  // namespace hdprior::render
