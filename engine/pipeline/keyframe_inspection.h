@@ -11,7 +11,7 @@
 namespace hdprior {
 
 // The labels of a key-frame sub-map's points (LabelledSubmap::labels).
-enum class PointLabel : uint8_t { Other = 0, Ground = 1, Road = 2, Curb = 3 };
+enum class SubmapLabel : uint8_t { Other = 0, Ground = 1, Road = 2, Curb = 3 };
 
 // What the tuning bench shows of one keyframe, re-computed on demand with the options being tuned:
 // its sub-map (the sweeps the road points come from) labelled other / ground / road / curb in the
@@ -24,7 +24,7 @@ struct KeyframeInspection {
   std::optional<Eigen::Vector3d> truth;  // ground-truth (x, y, yaw), when the log's poses cover it
   Eigen::Vector3d start = Eigen::Vector3d::Zero();  // the match's start (x, y, yaw)
   std::vector<Eigen::Vector3f> points;  // the sub-map, level frame
-  std::vector<PointLabel> labels;       // one per point
+  std::vector<SubmapLabel> labels;       // one per point
   std::vector<Eigen::Vector2d> roadPoints, curbPoints;  // what the matcher got (thinned road, curbs)
   MatchResult match;
 };
