@@ -11,6 +11,7 @@ namespace hdprior::render {
 
 struct Scene;
 struct Frame;
+struct Analysis;
 struct ShaderLibrary;
 
 struct DrawContext {
@@ -32,6 +33,9 @@ class Layer {
   virtual void setScene(const Scene& scene) {}
   // On every frame change, for per-frame data (the sweep, the ego pose).
   virtual void setFrame(const Scene& scene, const Frame& frame) {}
+  // When the pipeline's results change (trajectories, keyframes, the inspected keyframe). The
+  // analysis outlives the call (the renderer keeps it until the next one): layers may keep a pointer.
+  virtual void setAnalysis(const Scene& scene, const Analysis& analysis) {}
   virtual void draw(const DrawContext& context) const = 0;
   // The controls beyond visibility and opacity (colours, colouring, point size, ...).
   virtual std::vector<LayerOption> options() { return {}; }

@@ -9,10 +9,16 @@
 #include "render/layers/drivable_boundary_layer.h"
 #include "render/layers/drivable_raster_layer.h"
 #include "render/layers/ego_pose_layer.h"
+#include "render/layers/estimated_trajectory_layer.h"
 #include "render/layers/ground_height_layer.h"
+#include "render/layers/keyframes_layer.h"
+#include "render/layers/landscape_layer.h"
 #include "render/layers/lane_centerline_layer.h"
 #include "render/layers/lidar_sweep_layer.h"
+#include "render/layers/match_layer.h"
+#include "render/layers/ndt_cells_layer.h"
 #include "render/layers/pedestrian_crossing_layer.h"
+#include "render/layers/road_points_layer.h"
 #include "render/layers/trajectory_layer.h"
 
 namespace hdprior::render {
@@ -23,6 +29,7 @@ struct Entry {
   std::string name;
   Factory factory;
   bool standard;  // part of "all"
+  bool analysis = false;  // draws render::Analysis
 };
 
 template <typename T>
@@ -30,12 +37,36 @@ Entry entry(bool standard = true) {
   return {T::kName, [] { return std::make_unique<T>(); }, standard};
 }
 
+// The analysis layers are extras: "all" stays the log and its map.
+template <typename T>
+Entry analysisEntry() {
+  return {T::kName, [] { return std::make_unique<T>(); }, false, true};
+}
+
+Entry trajectoryEntry(EstimatedTrajectoryLayer::Which which, const char* name) {
+  return {name, [which] { return std::make_unique<EstimatedTrajectoryLayer>(which); }, false, true};
+}
+
 // Drawing order: bottom first.
 const std::vector<Entry>& registry() {
+  using Which = EstimatedTrajectoryLayer::Which;
   static const std::vector<Entry> layers = {
-      entry<GroundHeightLayer>(),   entry<DrivableRasterLayer>(),  entry<DrivableBoundaryLayer>(),
-      entry<LaneCenterlineLayer>(), entry<PedestrianCrossingLayer>(false), entry<TrajectoryLayer>(),
-      entry<AccumulatedSweepsLayer>(false), entry<LidarSweepLayer>(), entry<EgoPoseLayer>(),
+      entry<GroundHeightLayer>(),
+      entry<DrivableRasterLayer>(),
+      analysisEntry<LandscapeLayer>(),
+      entry<DrivableBoundaryLayer>(),
+      entry<LaneCenterlineLayer>(),
+      entry<PedestrianCrossingLayer>(false),
+      entry<NdtCellsLayer>(false),
+      entry<TrajectoryLayer>(),
+      trajectoryEntry(Which::Odometry, EstimatedTrajectoryLayer::kOdometryName),
+      trajectoryEntry(Which::Optimized, EstimatedTrajectoryLayer::kOptimizedName),
+      analysisEntry<KeyframesLayer>(),
+      entry<AccumulatedSweepsLayer>(false),
+      entry<LidarSweepLayer>(),
+      analysisEntry<RoadPointsLayer>(),
+      analysisEntry<MatchLayer>(),
+      entry<EgoPoseLayer>(),
   };
   return layers;
 }
@@ -65,6 +96,12 @@ const std::vector<std::string>& standardLayerNames() {
     return n;
   }();
   return names;
+}
+
+bool needsAnalysis(const std::string& name) {
+  for (const Entry& e : registry())
+    if (e.name == name) return e.analysis;
+  return false;
 }
 
 std::unique_ptr<Layer> makeLayer(const std::string& name) {

@@ -61,6 +61,12 @@ void Renderer::setFrame(const Frame& frame) {
   if (first) std::rethrow_exception(first);
 }
 
+void Renderer::setAnalysis(Analysis analysis) {
+  ++generation_;
+  analysis_ = std::move(analysis);
+  for (const auto& layer : layers_) layer->setAnalysis(scene_, analysis_);
+}
+
 void Renderer::rebuild(Layer& layer) {
   ++generation_;
   layer.setFrame(scene_, frame_);

@@ -3,6 +3,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/analysis.h"
 #include "render/camera.h"
 #include "render/layer.h"
 #include "render/scene.h"
@@ -27,6 +28,9 @@ class Renderer {
   void setScene(const Scene& scene);  // uploads static data of every layer
   // Uploads per-frame data; if a layer throws, the others still update and the first error is rethrown.
   void setFrame(const Frame& frame);
+  // Keeps the analysis and hands it to every layer (after setScene).
+  void setAnalysis(Analysis analysis);
+  const Analysis& analysis() const { return analysis_; }
   // Builds one layer's per-frame data again after an option that `rebuilds` changed.
   void rebuild(Layer& layer);
   const Frame& frame() const { return frame_; }
@@ -44,6 +48,7 @@ class Renderer {
   std::vector<std::unique_ptr<Layer>> layers_;
   Scene scene_;
   Frame frame_;
+  Analysis analysis_;
   uint64_t generation_ = 0;  // counts data uploads (scene, frame, rebuilds)
 };
 

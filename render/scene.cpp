@@ -9,6 +9,11 @@
 
 namespace hdprior::render {
 
+double Scene::groundZ(const Eigen::Vector2d& xy, double fallback) const {
+  const double h = map && map->hasGroundHeight() ? map->groundHeight().bilinearAt(xy) : NAN;
+  return std::isfinite(h) ? h : fallback;
+}
+
 Scene makeScene(const ArgoverseLog& log, const HdMap& map) {
   Scene scene{&log, &map, Eigen::Vector3d::Zero()};
   if (!log.cityTEgo().empty()) scene.origin = log.cityTEgo().poses().front().translation();
@@ -25,9 +30,7 @@ Frame makeFrame(const Scene& scene, size_t index) {
   frame.timestampNs = log.sweepTimestamps()[index];
   frame.cityTEgo = log.cityTEgo().at(frame.timestampNs);
   frame.sweep = log.sweep(index);
-  const Eigen::Vector2d xy = frame.cityTEgo.translation().head<2>();
-  const double h = scene.map->hasGroundHeight() ? scene.map->groundHeight().bilinearAt(xy) : NAN;
-  frame.groundZ = std::isfinite(h) ? h : frame.cityTEgo.translation().z();
+  frame.groundZ = scene.groundZ(frame.cityTEgo.translation().head<2>(), frame.cityTEgo.translation().z());
   return frame;
 }
 

@@ -23,6 +23,8 @@ struct Scene {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 
   Eigen::Vector3f local(const Eigen::Vector3d& city) const { return (city - origin).cast<float>(); }
+  // The map's ground height at a city (x, y), or `fallback` where it has none.
+  double groundZ(const Eigen::Vector2d& xy, double fallback) const;
 };
 
 // The current frame: its sweep and ground-truth pose.

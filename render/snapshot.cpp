@@ -8,6 +8,7 @@
 #include "engine/error.h"
 #include "engine/map/hd_map.h"
 #include "render/layer_registry.h"
+#include "render/layers/road_points_layer.h"
 #include "render/offscreen_context.h"
 #include "render/renderer.h"
 
@@ -16,7 +17,15 @@ namespace hdprior::render {
 View parseView(const std::string& name) {
   if (name == "top") return View::Top;
   if (name == "orbit") return View::Orbit;
-  throw Error("option --view", "unknown view '" + name + "' (expected top or orbit)");
+  if (name == "landscape") return View::Landscape;
+  if (name == "inspector") return View::Inspector;
+  throw Error("option --view", "unknown view '" + name + "' (expected top, orbit, landscape or inspector)");
+}
+
+std::vector<std::string> defaultLayers(View view) {
+  if (view == View::Landscape) return parseLayerList("drivable,boundary,landscape,road_points,match");
+  if (view == View::Inspector) return parseLayerList("drivable,boundary,road_points,keyframes,match");
+  return standardLayerNames();
 }
 
 void parseSize(const std::string& text, int& width, int& height) {
@@ -35,9 +44,19 @@ HdMapOptions renderMapOptions() {
   return options;
 }
 
-Camera viewCamera(View view, const Scene& scene, const Frame& frame, double aspect) {
+Camera viewCamera(View view, const Scene& scene, const Frame& frame, double aspect, const Analysis* analysis) {
+  const KeyframeInspection* inspection = analysis && analysis->inspection ? &*analysis->inspection : nullptr;
+  if (inspection && (view == View::Landscape || view == View::Inspector)) {
+    const Eigen::Vector3d estimate = inspection->match.estimate;
+    const Eigen::Vector3d at(estimate.x(), estimate.y(), inspection->keyframePose.translation().z());
+    if (view == View::Inspector)
+      return orbitCamera(at - scene.origin, estimate.z(), 40.0 * std::numbers::pi / 180.0, 60.0, aspect);
+    const double extent = analysis->landscape ? 2.0 * analysis->landscape->options.halfExtent : 10.0;
+    const Eigen::Vector3d centre = analysis->landscape ? Eigen::Vector3d(analysis->landscape->center.x(), analysis->landscape->center.y(), at.z()) : at;
+    return topDownCamera(centre - scene.origin, 1.15 * extent, aspect);
+  }
   const Eigen::Vector3d ego = frame.cityTEgo.translation() - scene.origin;
-  if (view == View::Top) return topDownCamera(ego, 80.0, aspect);
+  if (view == View::Top || view == View::Landscape) return topDownCamera(ego, 80.0, aspect);
   const Eigen::Vector3d forward = frame.cityTEgo.linear().col(0);
   const double yaw = std::atan2(forward.y(), forward.x());
   return orbitCamera(ego + Eigen::Vector3d(0, 0, 1.0), yaw, 30.0 * std::numbers::pi / 180.0, 40.0, aspect);
@@ -57,9 +76,17 @@ struct Snapshotter::State {
 Snapshotter::Snapshotter(const ArgoverseLog& log, const HdMap& map, const SnapshotOptions& options)
     : state_(std::make_unique<State>(options, log, map)) {
   state_->renderer.emplace();
-  for (const auto& name : options.layers.empty() ? standardLayerNames() : options.layers)
-    state_->renderer->addLayer(makeLayer(name));
+  for (const auto& name : options.layers.empty() ? defaultLayers(options.view) : options.layers) {
+    std::unique_ptr<Layer> layer = makeLayer(name);
+    if (auto* points = dynamic_cast<RoadPointsLayer*>(layer.get())) points->showNonGround(options.view == View::Inspector);
+    state_->renderer->addLayer(std::move(layer));
+  }
   state_->renderer->setScene(state_->scene);
+}
+
+void Snapshotter::setAnalysis(Analysis analysis) {
+  state_->context.makeCurrent();
+  state_->renderer->setAnalysis(std::move(analysis));
 }
 
 Snapshotter::~Snapshotter() {
@@ -76,7 +103,8 @@ Image Snapshotter::render(size_t index) {
     s.frameIndex = index;
   }
   const double aspect = double(s.options.width) / s.options.height;
-  s.renderer->draw(viewCamera(s.options.view, s.scene, s.frame, aspect), s.options.width, s.options.height);
+  s.renderer->draw(viewCamera(s.options.view, s.scene, s.frame, aspect, &s.renderer->analysis()), s.options.width,
+                   s.options.height);
   return s.context.readPixels();
 }
 

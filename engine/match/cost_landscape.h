@@ -30,6 +30,8 @@ struct CostLandscape {
   std::vector<double> yawScores; // one per yaw offset (ascending)
   double offset(int index) const { return (index - size / 2) * options.step; }
   double at(int row, int col) const { return scores[size_t(row) * size + col]; }
+  int yawCount() const { return int(yawScores.size()); }
+  double yawOffsetDeg(int index) const { return (index - yawCount() / 2) * options.yawStepDeg; }
 };
 
 CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& center,

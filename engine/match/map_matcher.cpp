@@ -56,22 +56,26 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eig
       const PclNdtBackend::Alignment a = pcl_->align(points, initial);
       r.estimate = a.pose;
       r.iterations = a.iterations;
+      r.path = {initial, a.pose};
       timedOut = std::chrono::steady_clock::now() > deadline;
     } else {
       const NdtOptimization opt = optimizeNdt(levels_, points, initial, options_, deadline);
       r.estimate = opt.pose;
       r.iterations = opt.iterations;
+      r.path = opt.path;
       timedOut = opt.timedOut;
     }
     if (options_.curbRefinement && !timedOut) {
       const CurbRefinementOptions co{.huber = options_.curbHuber, .maxDistance = options_.curbMaxDistance,
                                      .minPoints = options_.minCurbPoints, .lateralOnly = options_.curbLateralOnly};
       const CurbRefinement c = refineOnCurbs(map_.boundaryDistance(), curbPoints, r.estimate, co);
+      if (c.pose != r.estimate) r.path.push_back(c.pose);
       r.estimate = c.pose;
       r.iterations += c.iterations;
     }
   } else {
     r.estimate = initial;
+    r.path = {initial};
   }
   assessMatch(*levels_.back(), map_.drivable(), map_.boundaryDistance(), points, options_, timedOut, r);
   r.timeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

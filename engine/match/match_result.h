@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -34,6 +35,9 @@ struct MatchResult {
   double inlierRatio = 0.0;  // share of points on the drivable area at the estimate
   double gateChi2 = 0.0;     // Mahalanobis distance^2 of estimate - initial under the prediction
   int iterations = 0;
+  // The start, every iterate of the backend (the 2-D NDT's Newton steps of every level, coarse to
+  // fine; PCL's start and result), then the curb refinement's result if it moved the pose.
+  std::vector<Eigen::Vector3d> path;
   double timeMs = 0.0;
   size_t points = 0;
 };

@@ -34,6 +34,7 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
                             std::chrono::steady_clock::time_point deadline) {
   NdtOptimization result;
   result.pose = initial;
+  result.path.push_back(initial);
   const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = o.lookup};
   std::vector<Eigen::Vector2d> subset;
   const double finest = levels.empty() ? 1.0 : levels.back()->cellSize();
@@ -78,6 +79,7 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
         }
       }
       ++result.iterations;
+      result.path.push_back(x);
       if (!moved) break;
       if (step.head<2>().norm() < o.translationTolerance && std::abs(step.z()) < o.yawToleranceDeg * kDegree) break;
     }

@@ -14,6 +14,9 @@ class NdtGrid;
 struct NdtOptimization {
   Eigen::Vector3d pose = Eigen::Vector3d::Zero();
   int iterations = 0;
+  // The start, then the pose after every counted iteration of every level (coarse to fine):
+  // path.size() == iterations + 1.
+  std::vector<Eigen::Vector3d> path;
   bool timedOut = false;
 };
 

@@ -1,6 +1,5 @@
 #include "render/layers/drivable_boundary_layer.h"
 
-#include <cmath>
 #include <vector>
 
 #include "engine/map/hd_map.h"
@@ -14,9 +13,7 @@ void DrivableBoundaryLayer::setScene(const Scene& scene) {
   std::vector<ColoredVertex> vertices;
   vertices.reserve(map.drivable().boundaryPoints().size());
   for (const Eigen::Vector2d& p : map.drivable().boundaryPoints()) {
-    const double h = map.hasGroundHeight() ? map.groundHeight().bilinearAt(p) : NAN;
-    const double z = std::isfinite(h) ? h : scene.origin.z();
-    vertices.push_back({scene.local({p.x(), p.y(), z}), {1.0f, 1.0f, 1.0f, 1.0f}});
+    vertices.push_back({scene.local({p.x(), p.y(), scene.groundZ(p, scene.origin.z())}), {1.0f, 1.0f, 1.0f, 1.0f}});
   }
   points_ = std::make_unique<GpuMesh>();
   points_->upload(std::span<const ColoredVertex>(vertices));

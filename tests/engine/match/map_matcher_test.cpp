@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "../map/synthetic_maps.h"
+#include "ring_road_points.h"
 #include "engine/error.h"
 #include "engine/geom/se2.h"
 #include "engine/map/drivable_raster.h"
@@ -29,18 +30,7 @@ HdMap buildMap(VectorMap vm) {
   return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
 }
 
-// Road points as a ring lidar sees them: circles every 1.5 m out to 30 m, a point every
-// degree, kept where they land on the drivable area; in the vehicle's frame.
-std::vector<Eigen::Vector2d> ringRoadPoints(const DrivableRaster& drivable, const Eigen::Vector3d& truth) {
-  std::vector<Eigen::Vector2d> points;
-  for (double r = 3.0; r <= 30.0; r += 1.5) {
-    for (double a = 0.0; a < 360.0; a += 1.0) {
-      const Eigen::Vector2d p(r * std::cos(a * kDeg), r * std::sin(a * kDeg));
-      if (drivable.contains(Eigen::Rotation2Dd(truth.z()) * p + truth.head<2>())) points.push_back(p);
-    }
-  }
-  return points;
-}
+using test::ringRoadPoints;
 
 TEST(MapMatcher, CorridorFixesLateralAndYawAndReportsTheAlongDirectionUnobservable) {
   const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
@@ -132,6 +122,31 @@ TEST(MapMatcher, RejectsPoorFitsFewPointsAndInconsistentEstimates) {
     EXPECT_NE(r.reason.find("inconsistent"), std::string::npos) << r.reason;
     EXPECT_GT(r.gateChi2, o.gateChi2);
   }
+}
+
+TEST(MapMatcher, RecordsTheIterationPathFromStartToEstimate) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const Eigen::Vector3d truth(2.0, -1.0, 0.3);
+  const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
+  const Eigen::Vector3d start = offsetPose(truth, {1.0, -1.5, 3.0 * kDeg});
+  MatchOptions o;
+  o.timeBudgetMs = 1e6;
+  o.curbRefinement = false;
+  MapMatcher matcher(map, o);
+  const MatchResult r = matcher.match(points, start);
+  ASSERT_GT(r.iterations, 1);
+  ASSERT_EQ(r.path.size(), size_t(r.iterations) + 1);  // the start, then one pose per Newton iteration
+  EXPECT_EQ(r.path.front(), start);
+  EXPECT_EQ(r.path.back(), r.estimate);
+  // The path climbs towards the truth: its last iterate is much closer than its start.
+  EXPECT_LT(planarError(truth, r.path.back()).head<2>().norm(), 0.25 * planarError(truth, start).head<2>().norm());
+
+  o.backend = MatchBackend::PclNdt;
+  MapMatcher pcl(map, o);
+  const MatchResult p = pcl.match(points, start);
+  ASSERT_EQ(p.path.size(), 2u);
+  EXPECT_EQ(p.path.front(), start);
+  EXPECT_EQ(p.path.back(), p.estimate);
 }
 
 TEST(MapMatcher, TimeBudgetIsRespected) {

@@ -1,0 +1,42 @@
+#include "render/analysis.h"
+
+#include <cmath>
+#include <limits>
+
+#include "engine/pipeline/session.h"
+
+namespace hdprior::render {
+namespace {
+
+// Per pose: the distance to the ground truth at its timestamp (ATE translation, city frame,
+// no alignment: the pipeline starts from the first true pose); NaN where the truth has no pose.
+std::vector<double> translationErrors(const PoseTrajectory& truth, const PoseTrajectory& estimate) {
+  std::vector<double> errors;
+  errors.reserve(estimate.size());
+  for (size_t i = 0; i < estimate.size(); ++i) {
+    const int64_t t = estimate.timestamps()[i];
+    errors.push_back(truth.covers(t) ? (truth.at(t).translation() - estimate.poses()[i].translation()).norm()
+                                     : std::numeric_limits<double>::quiet_NaN());
+  }
+  return errors;
+}
+
+}  // namespace
+
+Analysis analysisOf(const Session& session) {
+  Analysis a;
+  a.groundTruth = session.groundTruth();
+  a.odometry = session.odometryTrajectory();
+  a.optimized = session.optimizedTrajectory();
+  a.odometryError = translationErrors(a.groundTruth, a.odometry);
+  a.optimizedError = translationErrors(a.groundTruth, a.optimized);
+  const std::vector<SE3> poses = session.keyframePoses();
+  const auto& keyframes = session.odometry().keyframes();
+  for (size_t k = 0; k < keyframes.size() && k < poses.size(); ++k)
+    a.keyframes.push_back({.keyframe = k, .frame = keyframes[k].frame, .pose = poses[k], .status = std::nullopt});
+  for (const KeyframeMatch& m : session.matches())
+    if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.match.status;
+  return a;
+}
+
+}  // namespace hdprior::render

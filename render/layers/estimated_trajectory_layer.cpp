@@ -1,0 +1,62 @@
+#include "render/layers/estimated_trajectory_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "render/analysis.h"
+#include "render/colormap.h"
+#include "render/layers/layer_drawing.h"
+#include "render/scene.h"
+
+namespace hdprior::render {
+
+EstimatedTrajectoryLayer::EstimatedTrajectoryLayer(Which which)
+    : which_(which),
+      color_(which == Which::Odometry ? Eigen::Vector4f(1.0f, 0.45f, 0.15f, 1.0f) : Eigen::Vector4f(0.25f, 0.55f, 1.0f, 1.0f)) {}
+
+void EstimatedTrajectoryLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
+  analysis_ = &analysis;
+  build(scene);
+}
+
+void EstimatedTrajectoryLayer::build(const Scene& scene) {
+  if (!line_) line_ = std::make_unique<GpuMesh>();
+  std::vector<ColoredVertex> vertices;
+  if (analysis_) {
+    const bool odometry = which_ == Which::Odometry;
+    const PoseTrajectory& trajectory = odometry ? analysis_->odometry : analysis_->optimized;
+    const std::vector<double>& errors = odometry ? analysis_->odometryError : analysis_->optimizedError;
+    double top = errorMax_;
+    if (!(top > 0)) {
+      for (double e : errors)
+        if (std::isfinite(e)) top = std::max(top, e);
+    }
+    for (size_t i = 0; i < trajectory.size(); ++i) {
+      Eigen::Vector4f c = Eigen::Vector4f::Ones();
+      if (byError_) {
+        const double e = i < errors.size() ? errors[i] : NAN;
+        c = std::isfinite(e) ? Eigen::Vector4f(turbo(float(e / std::max(top, 1e-6))).homogeneous())
+                             : Eigen::Vector4f(0.5f, 0.5f, 0.5f, 1.0f);
+      }
+      vertices.push_back({scene.local(trajectory.poses()[i].translation()), c});
+    }
+  }
+  line_->upload(std::span<const ColoredVertex>(vertices));
+}
+
+void EstimatedTrajectoryLayer::draw(const DrawContext& context) const {
+  if (!line_ || line_->size() == 0) return;
+  const Eigen::Vector4f tint = byError_ ? Eigen::Vector4f::Ones() : color_;
+  drawColored(context, *line_, Primitive::LineStrip, 1.0f, false, tint);
+  drawColored(context, *line_, Primitive::Points, 3.0f, true, tint);
+}
+
+std::vector<LayerOption> EstimatedTrajectoryLayer::options() {
+  LayerOption range = LayerOption::slider("error range (m, 0: largest)", &errorMax_, 0.0f, 5.0f);
+  range.rebuilds = true;
+  return {LayerOption::choice("colour by", &byError_, {"own colour", "error (ATE)"}, true), range,
+          LayerOption::colorPicker("colour", &color_)};
+}
+
+}  // namespace hdprior::render
