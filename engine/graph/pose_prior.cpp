@@ -51,4 +51,12 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   return prior;
 }
 
+PriorResidual priorResidual(const PosePrior& prior, const SE3& pose) {
+  PriorResidual r;
+  r.error(0) = std::remainder(yawOf(pose) - yawOf(prior.pose), 2.0 * std::numbers::pi);
+  r.error.tail<3>() = pose.translation() - prior.pose.translation();
+  r.chi2 = r.error.dot(prior.information * r.error);
+  return r;
+}
+
 }  // namespace hdprior

@@ -41,4 +41,12 @@ Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const Pos
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
                         const PosePriorOptions& options = {});
 
+// The prior's residual at a pose, as its factor sees it: (yaw, x, y, z) differences (yaw wrapped),
+// and chi2 = r^T Omega r, the squared Mahalanobis distance before the robust loss.
+struct PriorResidual {
+  Eigen::Vector4d error = Eigen::Vector4d::Zero();
+  double chi2 = 0.0;
+};
+PriorResidual priorResidual(const PosePrior& prior, const SE3& pose);
+
 }  // namespace hdprior

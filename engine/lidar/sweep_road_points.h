@@ -35,6 +35,17 @@ struct PlanarRoadPoints {
   std::vector<Eigen::Vector2d> curb;  // the road points at curbs (kCurbPoint), all of them
 };
 
+// The points of several sweeps in the key frame's level frame with their ground flags (segmentGround)
+// and road flags (0, kRoadPoint or kCurbPoint: extractRoadPoints), each computed per sweep.
+struct LabelledSubmap {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<uint8_t> ground, road;
+};
+LabelledSubmap labelSubmap(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options = {});
+
+// The road points of a labelled sub-map on the plane (thinned) and its curb points.
+PlanarRoadPoints planarRoadPoints(const LabelledSubmap& submap, double thinCell);
+
 // The road points of several sweeps in the key frame's level frame, thinned together.
 PlanarRoadPoints submapRoadPoints(std::span<const SubmapSweep> sweeps, const SweepRoadPointOptions& options = {});
 

@@ -16,6 +16,8 @@
 
 namespace hdprior {
 
+class HdMap;
+
 struct PipelineOptions {
   bool priors = true;     // false: lidar odometry alone
   double mapVoxel = 0.2;  // metres, of the global map
@@ -47,7 +49,11 @@ struct PipelineRun {
   const PoseTrajectory& final() const { return hasPriors() ? optimized : estimate; }
 };
 
-// progress(done, total) is called after each sweep. Throws Error naming the sweep file for a bad or
+// The log's HD map with the NDT grids config.match names; throws Error naming the file that is
+// wrong, or the log when the map has no ground-height raster (the altitude prior needs it).
+std::unique_ptr<HdMap> loadPriorMap(const ArgoverseLog& log, const Config& config);
+
+// A Session run to the end and finished. progress(done, total) is called after each sweep. Throws Error naming the sweep file for a bad or
 // empty sweep, or the log when it has no sweeps, its poses do not cover the first sweep, or (with
 // priors) its map lacks what the priors need.
 PipelineRun runPipeline(const ArgoverseLog& log, const Config& config, const PipelineOptions& options = {},

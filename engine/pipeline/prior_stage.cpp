@@ -42,29 +42,29 @@ Matrix6d odometryInformation(const Eigen::Matrix<double, 6, 6>& relativeCovarian
 
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom)
     : map_(map), config_(config), cityTOdom_(cityTOdom), matcher_(std::make_unique<MapMatcher>(map, config.match)),
-      graph_(config.graph) {
+      graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
 }
 
 PriorStage::~PriorStage() = default;
 
 SE3 PriorStage::predictedPose(const Keyframe& keyframe) const {
-  if (graph_.size() == 0) return cityTOdom_ * keyframe.odomTEgo;
-  return graph_.pose(graph_.size() - 1) * keyframe.previousTThis;
+  if (graph_->size() == 0) return cityTOdom_ * keyframe.odomTEgo;
+  return graph_->pose(graph_->size() - 1) * keyframe.previousTThis;
 }
 
-PlanarRoadPoints PriorStage::roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const {
-  const Keyframe& kf = odometry.keyframes().back();
-  const std::vector<size_t> frames = config_.submapRoadPoints ? kf.submapFrames : std::vector<size_t>{kf.frame};
-  const Eigen::Vector3d keyframePlanar = planarPose(cityTOdom_ * kf.odomTEgo);
-  std::vector<std::shared_ptr<const LidarSweep>> sweeps;
-  std::vector<SubmapSweep> submap;
+KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, bool submap,
+                              const SweepOf& sweepOf) {
+  const Keyframe& kf = odometry.keyframes().at(keyframe);
+  const std::vector<size_t> frames = submap ? kf.submapFrames : std::vector<size_t>{kf.frame};
+  const Eigen::Vector3d keyframePlanar = planarPose(cityTOdom * kf.odomTEgo);
+  KeyframeSweeps out;
   for (size_t f : frames) {
-    const SE3 cityTSweep = cityTOdom_ * odometry.frames()[f].odomTEgo;
-    sweeps.push_back(sweepOf(f));
-    submap.push_back({sweeps.back().get(), levelRotation(cityTSweep), planarBetween(keyframePlanar, planarPose(cityTSweep))});
+    const SE3 cityTSweep = cityTOdom * odometry.frames()[f].odomTEgo;
+    out.loaded.push_back(sweepOf(f));
+    out.placed.push_back({out.loaded.back().get(), levelRotation(cityTSweep), planarBetween(keyframePlanar, planarPose(cityTSweep))});
   }
-  return submapRoadPoints(submap, config_.roadPoints);
+  return out;
 }
 
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
@@ -77,7 +77,8 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   m.predicted = predictedPose(kf);
 
   auto start = std::chrono::steady_clock::now();
-  const PlanarRoadPoints points = roadPoints(odometry, sweepOf);
+  const KeyframeSweeps sweeps = keyframeSweeps(odometry, odometry.keyframes().size() - 1, cityTOdom_, config_.submapRoadPoints, sweepOf);
+  const PlanarRoadPoints points = submapRoadPoints(sweeps.placed, config_.roadPoints);
   times_.roadPointsS += secondsSince(start);
 
   start = std::chrono::steady_clock::now();
@@ -87,19 +88,36 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   times_.matchS += secondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  const size_t k = graph_.addKeyframe(kf.timestampNs, odometryPose, m.predicted);
-  if (k > 0) graph_.addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, config_.graph));
-  if (m.hasPrior) graph_.addPrior(k, m.prior);
-  graph_.solve(true);
+  const size_t k = graph_->addKeyframe(kf.timestampNs, odometryPose, m.predicted);
+  if (k > 0) graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, config_.graph));
+  if (m.hasPrior) graph_->addPrior(k, m.prior);
+  graph_->solve(true);
   times_.graphS += secondsSince(start);
   matches_.push_back(std::move(m));
 }
 
 SolveSummary PriorStage::finish() {
   const auto start = std::chrono::steady_clock::now();
-  const SolveSummary s = graph_.solve(false);
+  const SolveSummary s = graph_->solve(false);
   times_.graphS += secondsSince(start);
   return s;
+}
+
+void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph) {
+  config_.prior = prior;
+  config_.graph = graph;
+  auto rebuilt = std::make_unique<PoseGraph>(graph);
+  for (size_t k = 0; k < matches_.size(); ++k) {
+    const Keyframe& kf = odometry.keyframes()[k];
+    rebuilt->addKeyframe(kf.timestampNs, cityTOdom_ * kf.odomTEgo, graph_->pose(k));
+    if (k > 0) rebuilt->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, graph));
+    KeyframeMatch& m = matches_[k];
+    if (m.hasPrior) {
+      m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), prior);
+      rebuilt->addPrior(k, m.prior);
+    }
+  }
+  graph_ = std::move(rebuilt);
 }
 
 }  // namespace hdprior

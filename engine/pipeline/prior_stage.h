@@ -30,6 +30,18 @@ struct KeyframeMatch {
   PosePrior prior;
 };
 
+// Loads the sweep of an odometry frame.
+using SweepOf = std::function<std::shared_ptr<const LidarSweep>(size_t frame)>;
+
+// The sweeps keyframe k's road points come from (its own, or with `submap` its key-frame sub-map's),
+// each placed in the keyframe's level frame; `loaded` keeps them in memory.
+struct KeyframeSweeps {
+  std::vector<std::shared_ptr<const LidarSweep>> loaded;
+  std::vector<SubmapSweep> placed;
+};
+KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, bool submap,
+                              const SweepOf& sweepOf);
+
 struct PriorStageTimes {
   double roadPointsS = 0, matchS = 0, graphS = 0;
 };
@@ -41,8 +53,6 @@ struct PriorStageTimes {
 // warm-started solve. finish() is the final batch solve.
 class PriorStage {
  public:
-  using SweepOf = std::function<std::shared_ptr<const LidarSweep>(size_t frame)>;
-
   // cityTOdom places the odometry frame in the city (the first ground-truth pose).
   PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom);
   ~PriorStage();
@@ -52,20 +62,22 @@ class PriorStage {
   // The odometry's newest keyframe; sweepOf loads the sweep of an odometry frame.
   void addKeyframe(const Odometry& odometry, const SweepOf& sweepOf);
   SolveSummary finish();
+  // Rebuilds the graph from the keyframes and matches so far with other prior and graph options
+  // (priors re-made from the same matches), warm-started from the current poses; does not solve.
+  void rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph);
 
   const std::vector<KeyframeMatch>& matches() const { return matches_; }
-  const PoseGraph& graph() const { return graph_; }
+  const PoseGraph& graph() const { return *graph_; }
   const PriorStageTimes& times() const { return times_; }
 
  private:
-  PlanarRoadPoints roadPoints(const Odometry& odometry, const SweepOf& sweepOf) const;
   SE3 predictedPose(const Keyframe& keyframe) const;
 
   const HdMap& map_;
   Config config_;
   SE3 cityTOdom_;
   std::unique_ptr<MapMatcher> matcher_;
-  PoseGraph graph_;
+  std::unique_ptr<PoseGraph> graph_;
   std::vector<KeyframeMatch> matches_;
   PriorStageTimes times_;
 };

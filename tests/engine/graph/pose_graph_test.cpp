@@ -104,6 +104,26 @@ TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
   EXPECT_NEAR(r4[0], 2 * kDeg, 1e-12);  // not -358 degrees
 }
 
+TEST(PosePrior, ResidualIsWhatItsFactorWhitensAndItsChi2) {
+  PosePrior prior;
+  prior.pose = poseOf(10, 20, 1, 179 * kDeg, 0.02, -0.01);
+  prior.information = Eigen::Vector4d(100, 4, 9, 25).asDiagonal();
+  const SE3 at = poseOf(10.5, 19.7, 1.2, -178 * kDeg, 0.03, 0.01);
+  const PriorResidual r = priorResidual(prior, at);
+  EXPECT_NEAR(r.error(0), 3 * kDeg, 1e-9);
+  EXPECT_NEAR(r.error(1), 0.5, 1e-12);
+  EXPECT_NEAR(r.error(2), -0.3, 1e-12);
+  EXPECT_NEAR(r.error(3), 0.2, 1e-12);
+  // The factor's whitened residual has the same squared norm.
+  const PriorFactor factor(prior.pose, sqrtInformation<4>(prior.information));
+  Eigen::Quaterniond q(at.rotation());
+  Eigen::Vector3d t = at.translation();
+  Eigen::Vector4d whitened;
+  factor(q.coeffs().data(), t.data(), whitened.data());
+  EXPECT_NEAR(r.chi2, whitened.squaredNorm(), 1e-9);
+  EXPECT_NEAR(r.chi2, 100 * std::pow(3 * kDeg, 2) + 4 * 0.25 + 9 * 0.09 + 25 * 0.04, 1e-9);
+}
+
 TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
   const ArgoverseLog log(test::sharedLog());
   const GroundHeight ground = readGroundHeight(log.mapFiles().groundHeight, log.mapFiles().sim2);
