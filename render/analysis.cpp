@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/error.h"
 #include "engine/pipeline/session.h"
 
 namespace hdprior::render {
@@ -37,6 +38,13 @@ Analysis analysisOf(const Session& session) {
   for (const KeyframeMatch& m : session.matches())
     if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.match.status;
   return a;
+}
+
+void inspect(Analysis& analysis, const Session& session, const HdMap& map, size_t k) {
+  const Config& config = session.config();
+  analysis.inspection = session.inspectKeyframe(k, config.roadPoints, config.match);
+  if (analysis.inspection->roadPoints.empty()) throw Error("keyframe " + std::to_string(k), "has no road points");
+  analysis.landscape = matchLandscape(map, config.match, analysis.inspection->roadPoints, analysis.inspection->match.estimate);
 }
 
 }  // namespace hdprior::render

@@ -8,6 +8,7 @@
 #include "engine/pipeline/keyframe_inspection.h"
 
 namespace hdprior {
+class HdMap;
 class Session;
 }
 
@@ -33,5 +34,9 @@ struct Analysis {
 
 // The trajectories, per-pose errors and keyframes of a session as it stands.
 Analysis analysisOf(const Session& session);
+// Keyframe k inspected with the session's road-point and match options, and the cost landscape
+// (default extent) of its road points around the match estimate on `map` (the session's map).
+// Throws Error for a keyframe out of range, without priors, or without road points.
+void inspect(Analysis& analysis, const Session& session, const HdMap& map, size_t k);
 
 }  // namespace hdprior::render

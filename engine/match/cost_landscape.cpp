@@ -1,9 +1,11 @@
 #include "engine/match/cost_landscape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "engine/error.h"
+#include "engine/map/hd_map.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/odom/parallel_for.h"
 
@@ -34,7 +36,7 @@ CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d
   };
   // Each row is written by its own index: the same result for any thread count.
   parallelFor(
-      size_t(l.size), 2,
+      size_t(l.size), options.threads,
       [&](size_t begin, size_t end) {
         for (size_t row = begin; row < end; ++row) {
           for (int col = 0; col < l.size; ++col)
@@ -46,6 +48,14 @@ CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d
   for (int i = -yawHalf; i <= yawHalf; ++i)
     l.yawScores.push_back(score(center + Eigen::Vector3d(0.0, 0.0, i * options.yawStepDeg * kDegree)));
   return l;
+}
+
+CostLandscape matchLandscape(const HdMap& map, const MatchOptions& match, std::span<const Eigen::Vector2d> points,
+                             const Eigen::Vector3d& center, CostLandscapeOptions options) {
+  if (match.cellSizes.empty()) throw Error("match options", "cellSizes is empty");
+  options.score = {.outlierRatio = match.outlierRatio, .lookup = match.lookup};
+  const double finest = *std::min_element(match.cellSizes.begin(), match.cellSizes.end());
+  return costLandscape(map.ndtGrid(finest), points, center, options);
 }
 
 }  // namespace hdprior

@@ -5,9 +5,11 @@
 #include <Eigen/Core>
 
 #include "engine/map/ndt_score.h"
+#include "engine/match/match_options.h"
 
 namespace hdprior {
 
+class HdMap;
 class NdtGrid;
 
 struct CostLandscapeOptions {
@@ -16,6 +18,7 @@ struct CostLandscapeOptions {
   double yawHalfDeg = 5.0;   // the yaw profile: offsets in [-yawHalfDeg, +yawHalfDeg] ...
   double yawStepDeg = 0.25;  // ... every yawStepDeg
   NdtScoreParams score;      // outlier ratio and cell lookup, as the matcher's finest level
+  int threads = 2;           // rows are scored in parallel (the result does not depend on it)
 };
 
 // The NDT score of a set of road points (key-frame frame) over a grid of poses around `center`
@@ -36,5 +39,10 @@ struct CostLandscape {
 
 CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& center,
                             const CostLandscapeOptions& options = {});
+
+// The landscape the matcher's finest level sees: the map's grid of the smallest of match.cellSizes,
+// scored with match's outlier ratio and lookup (options.score is replaced by them).
+CostLandscape matchLandscape(const HdMap& map, const MatchOptions& match, std::span<const Eigen::Vector2d> points,
+                             const Eigen::Vector3d& center, CostLandscapeOptions options = {});
 
 }  // namespace hdprior

@@ -17,7 +17,8 @@ void Strokes::segment(const Eigen::Vector3f& a, const Eigen::Vector3f& b, float 
   lines.push_back({b, color});
   const Eigen::Vector2f n2 = Eigen::Vector2f(-d.y(), d.x()).normalized() * (0.5f * width);
   const Eigen::Vector3f n(n2.x(), n2.y(), 0.0f);
-  for (const Eigen::Vector3f& p : {a - n, b - n, b + n, a - n, b + n, a + n}) quads.push_back({p, color});
+  const Eigen::Vector3f a0 = a - n, a1 = a + n, b0 = b - n, b1 = b + n;
+  for (const Eigen::Vector3f* p : {&a0, &b0, &b1, &a0, &b1, &a1}) quads.push_back({*p, color});
 }
 
 void Strokes::polyline(const std::vector<Eigen::Vector3f>& points, float width, const Eigen::Vector4f& color) {

@@ -15,6 +15,7 @@
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/map/hd_map.h"
+#include "engine/match/cost_landscape.h"
 #include "engine/match/map_matcher.h"
 
 namespace hdprior {
@@ -93,6 +94,18 @@ void BM_SweepRoadPoints(benchmark::State& state) {
   state.counters["sweep_points"] = double(sweep->points.size());
 }
 BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond);
+
+// The tuning bench's cost landscape: 61 x 61 (x, y) offsets every 0.1 m and 41 yaw offsets, the
+// first sweep's road points on the finest grid around the ground truth.
+void BM_CostLandscape61(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const Case& c = f.cases.front();
+  const MatchOptions match;
+  for (auto _ : state) benchmark::DoNotOptimize(matchLandscape(*f.map, match, c.points, c.truth).scores.data());
+  state.counters["points"] = double(c.points.size());
+  state.counters["poses"] = 61.0 * 61.0 + 41.0;
+}
+BENCHMARK(BM_CostLandscape61)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace hdprior

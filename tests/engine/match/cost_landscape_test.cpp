@@ -30,14 +30,6 @@ HdMap buildMap(VectorMap vm) {
 HdMap intersection() { return buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)})); }
 HdMap corridor() { return buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)})); }
 
-// The finest grid scored as the matcher scores it there.
-CostLandscapeOptions matcherOptions() {
-  const MatchOptions m;
-  CostLandscapeOptions o;
-  o.score = {.outlierRatio = m.outlierRatio, .lookup = m.lookup};
-  return o;
-}
-
 const NdtGrid& finestGrid(const HdMap& map) {
   return map.ndtGrid(*std::min_element(MatchOptions{}.cellSizes.begin(), MatchOptions{}.cellSizes.end()));
 }
@@ -67,7 +59,7 @@ TEST(CostLandscape, MaximumLiesAtTheMatchersResultAtAnIntersection) {
   ASSERT_EQ(r.status, MatchStatus::Accepted) << r.reason;
   // Centred off the result, so the maximum is not at the centre by construction.
   const Eigen::Vector3d center = r.estimate + Eigen::Vector3d(0.83, -0.64, 0.0);
-  const CostLandscape l = costLandscape(finestGrid(map), points, center, matcherOptions());
+  const CostLandscape l = matchLandscape(map, MatchOptions{}, points, center);
   ASSERT_EQ(l.size, 61);
   ASSERT_EQ(l.scores.size(), size_t(61 * 61));
   const auto best = std::max_element(l.scores.begin(), l.scores.end()) - l.scores.begin();
@@ -75,7 +67,7 @@ TEST(CostLandscape, MaximumLiesAtTheMatchersResultAtAnIntersection) {
   EXPECT_LT((at - r.estimate.head<2>()).cwiseAbs().maxCoeff(), l.options.step + 1e-9)
       << "maximum at " << at.transpose() << ", match at " << r.estimate.head<2>().transpose();
   // The yaw profile around the result peaks at its middle (within one step).
-  const CostLandscape y = costLandscape(finestGrid(map), points, r.estimate, matcherOptions());
+  const CostLandscape y = matchLandscape(map, MatchOptions{}, points, r.estimate);
   ASSERT_EQ(y.yawCount(), 41);
   const int bestYaw = int(std::max_element(y.yawScores.begin(), y.yawScores.end()) - y.yawScores.begin());
   EXPECT_LE(std::abs(y.yawOffsetDeg(bestYaw)), y.options.yawStepDeg + 1e-9);
@@ -87,7 +79,7 @@ TEST(CostLandscape, IsARidgeAlongACorridor) {
   const HdMap map = corridor();
   const Eigen::Vector3d truth(3.0, 1.5, 0.0);
   const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), truth);
-  const CostLandscape l = costLandscape(finestGrid(map), points, truth, matcherOptions());
+  const CostLandscape l = matchLandscape(map, MatchOptions{}, points, truth);
   const double ratio = alongOverAcross(l);
   EXPECT_LT(ratio, 0.1) << "the score varies along the corridor by " << ratio << " of its variation across it";
 }
@@ -96,7 +88,8 @@ TEST(CostLandscape, ValuesAreTheNdtScoreAtEachOffset) {
   const HdMap map = intersection();
   const Eigen::Vector3d pose(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), pose);
-  CostLandscapeOptions o = matcherOptions();
+  CostLandscapeOptions o;
+  o.score = {.outlierRatio = 0.55, .lookup = NdtLookup::FourNearest};
   o.halfExtent = 1.0;
   o.step = 0.5;
   o.yawHalfDeg = 2.0;

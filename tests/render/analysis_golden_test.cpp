@@ -1,0 +1,131 @@
+// Golden images of the analysis layers and the landscape and inspector views: on a short simulated
+// town log (generated here, deterministic) and on the real shared log (two sweeps, one keyframe).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include <unistd.h>
+
+#include "engine/error.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/hd_map.h"
+#include "engine/pipeline/pipeline_run.h"
+#include "engine/pipeline/session.h"
+#include "engine/sim/log_writer.h"
+#include "render/analysis.h"
+#include "render/image_compare.h"
+#include "render/layer_registry.h"
+#include "render/snapshot.h"
+#include "test_data.h"
+
+namespace hdprior::test {
+namespace {
+
+// A log, its prior map and the analysis of one run over it with keyframe `keyframe` inspected.
+struct AnalysedLog {
+  std::unique_ptr<ArgoverseLog> log;
+  std::unique_ptr<HdMap> map;
+  render::Analysis analysis;
+
+  AnalysedLog(const std::filesystem::path& dir, size_t keyframe) : log(std::make_unique<ArgoverseLog>(dir)) {
+    map = loadPriorMap(*log, Config{});
+    Session session(*log, map.get(), Config{});
+    session.run();
+    session.optimize();
+    analysis = render::analysisOf(session);
+    render::inspect(analysis, session, *map, keyframe);
+  }
+
+  render::Image snapshot(render::View view, const std::string& layers) const {
+    render::SnapshotOptions options{640, 360, view, layers.empty() ? std::vector<std::string>{} : render::parseLayerList(layers)};
+    render::Snapshotter snapshotter(*log, *map, options);
+    snapshotter.setAnalysis(analysis);
+    return snapshotter.render(analysis.inspection->frame);
+  }
+};
+
+bool updatingGoldens() {
+  const char* update = std::getenv("HDPRIOR_UPDATE_GOLDEN");
+  return update && std::string(update) == "1";
+}
+
+constexpr const char* kTopLayers =
+    "drivable,boundary,ndt_cells,trajectory,odometry_trajectory,optimized_trajectory,keyframes,road_points,match,ego";
+
+class AnalysisGolden : public ::testing::Test {
+ protected:
+  // A 4 s drive through a procedural town (about 40 sweeps); its third keyframe is inspected.
+  static const AnalysedLog& simulated() {
+    static const AnalysedLog log = [] {
+      SimulationOptions sim;
+      sim.townSeed = 2;
+      sim.seed = 3;
+      sim.seconds = 4.0;
+      sim.outDir = freshOutputDir("analysis_golden_" + std::to_string(::getpid()));
+      return AnalysedLog(simulateLog(sim).dir, 2);
+    }();
+    return log;
+  }
+  static const AnalysedLog& real() {
+    static const AnalysedLog log(sharedLog(), 0);
+    return log;
+  }
+};
+
+TEST_F(AnalysisGolden, SimulatedTopAnalysisLayers) {
+  EXPECT_EQ(checkGolden(simulated().snapshot(render::View::Top, kTopLayers), "sim_top_analysis"), "");
+}
+
+TEST_F(AnalysisGolden, SimulatedLandscapeView) {
+  EXPECT_EQ(checkGolden(simulated().snapshot(render::View::Landscape, ""), "sim_landscape_view"), "");
+}
+
+TEST_F(AnalysisGolden, SimulatedInspectorView) {
+  EXPECT_EQ(checkGolden(simulated().snapshot(render::View::Inspector, ""), "sim_inspector_view"), "");
+}
+
+TEST_F(AnalysisGolden, RealLandscapeView) {
+  EXPECT_EQ(checkGolden(real().snapshot(render::View::Landscape, ""), "real_landscape_view"), "");
+}
+
+TEST_F(AnalysisGolden, RealTopRoadPointsAndMatch) {
+  EXPECT_EQ(checkGolden(real().snapshot(render::View::Top, "drivable,boundary,keyframes,road_points,match,ego"),
+                        "real_top_road_points_match"), "");
+}
+
+// The comparison has teeth for the new layers: the landscape view without its heat map, or the
+// top view without the road points, must fail against their goldens.
+TEST_F(AnalysisGolden, FailsWhenAnAnalysisLayerIsSwitchedOff) {
+  if (updatingGoldens()) GTEST_SKIP() << "regenerating goldens";
+  const std::string noLandscape =
+      checkGolden(real().snapshot(render::View::Landscape, "drivable,boundary,road_points,match"), "real_landscape_view");
+  EXPECT_NE(noLandscape.find("differ"), std::string::npos) << noLandscape;
+  const std::string noPoints =
+      checkGolden(real().snapshot(render::View::Top, "drivable,boundary,keyframes,match,ego"), "real_top_road_points_match");
+  EXPECT_NE(noPoints.find("differ"), std::string::npos) << noPoints;
+}
+
+TEST_F(AnalysisGolden, AnalysisHoldsPerPoseErrorsAndKeyframesAndRefusesABadKeyframe) {
+  const AnalysedLog& r = real();
+  Session session(*r.log, r.map.get(), Config{});
+  session.run();
+  render::Analysis analysis = render::analysisOf(session);
+  ASSERT_EQ(analysis.odometry.size(), r.log->sweepCount());
+  ASSERT_EQ(analysis.odometryError.size(), analysis.odometry.size());
+  EXPECT_LT(analysis.odometryError.front(), 1e-6);  // the run starts at the first true pose
+  EXPECT_LT(analysis.odometryError.back(), 0.5);
+  EXPECT_EQ(analysis.keyframes.size(), session.odometry().keyframes().size());
+  EXPECT_EQ(analysis.keyframes.front().frame, 0u);
+  EXPECT_THROW(render::inspect(analysis, session, *r.map, analysis.keyframes.size()), Error);
+  // The simulated drive's keyframes have match statuses and the optimised trajectory its errors.
+  const render::Analysis& sim = simulated().analysis;
+  ASSERT_GT(sim.keyframes.size(), 2u);
+  EXPECT_TRUE(sim.keyframes.back().status.has_value());
+  EXPECT_EQ(sim.optimizedError.size(), sim.optimized.size());
+  EXPECT_FALSE(sim.landscape->scores.empty());
+}
+
+}  // namespace
+}  // namespace hdprior::test
