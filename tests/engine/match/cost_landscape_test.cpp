@@ -8,9 +8,12 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "../map/synthetic_maps.h"
 #include "engine/error.h"
 #include "engine/geom/se2.h"
+#include "engine/map/drivable_raster.h"
 #include "engine/map/hd_map.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/match/map_matcher.h"
@@ -30,9 +33,20 @@ HdMap buildMap(VectorMap vm) {
 HdMap intersection() { return buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)})); }
 HdMap corridor() { return buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)})); }
 
-const NdtGrid& finestGrid(const HdMap& map) {
-  return map.ndtGrid(*std::min_element(MatchOptions{}.cellSizes.begin(), MatchOptions{}.cellSizes.end()));
+// Road points as a thinned sweep gives them: a 0.4 m lattice within 30 m of the vehicle (at
+// `truth`), kept where it lands on the drivable area; in the vehicle's frame.
+std::vector<Eigen::Vector2d> latticeRoadPoints(const DrivableRaster& drivable, const Eigen::Vector3d& truth) {
+  std::vector<Eigen::Vector2d> points;
+  for (double x = -30.0; x <= 30.0; x += 0.4) {
+    for (double y = -30.0; y <= 30.0; y += 0.4) {
+      const Eigen::Vector2d p(x, y);
+      if (p.norm() <= 30.0 && drivable.contains(Eigen::Rotation2Dd(truth.z()) * p + truth.head<2>())) points.push_back(p);
+    }
+  }
+  return points;
 }
+
+const NdtGrid& finestGrid(const HdMap& map) { return map.ndtGrids().back(); }  // coarse to fine
 
 // The score's range along the centre row (city x, the corridor's axis) over its range along the
 // centre column (city y, across).
@@ -51,7 +65,7 @@ double alongOverAcross(const CostLandscape& l) {
 TEST(CostLandscape, MaximumLiesAtTheMatchersResultAtAnIntersection) {
   const HdMap map = intersection();
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
-  const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), truth);
+  const std::vector<Eigen::Vector2d> points = latticeRoadPoints(map.drivable(), truth);
   MatchOptions mo;
   mo.timeBudgetMs = 1e6;
   MapMatcher matcher(map, mo);
@@ -78,7 +92,7 @@ TEST(CostLandscape, MaximumLiesAtTheMatchersResultAtAnIntersection) {
 TEST(CostLandscape, IsARidgeAlongACorridor) {
   const HdMap map = corridor();
   const Eigen::Vector3d truth(3.0, 1.5, 0.0);
-  const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), truth);
+  const std::vector<Eigen::Vector2d> points = latticeRoadPoints(map.drivable(), truth);
   const CostLandscape l = matchLandscape(map, MatchOptions{}, points, truth);
   const double ratio = alongOverAcross(l);
   EXPECT_LT(ratio, 0.1) << "the score varies along the corridor by " << ratio << " of its variation across it";
