@@ -20,7 +20,7 @@ class NdtCellsLayer : public Layer {
   std::unique_ptr<GpuMesh> lines_;
   int grid_ = 0;  // 0 finest, 1 next coarser, ...
   float radius_ = 40.0f;
-  Eigen::Vector4f color_{0.55f, 0.95f, 0.55f, 0.9f};
+  Eigen::Vector4f color_{0.45f, 0.95f, 0.55f, 0.35f};
 };
 
 }  // namespace hdprior::render

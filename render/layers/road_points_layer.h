@@ -37,7 +37,7 @@ class RoadPointsLayer : public Layer {
   int nonGround_ = 0;
   float pointSize_ = 2.0f;
   Eigen::Vector4f road_{0.20f, 0.80f, 1.00f, 1.0f}, curb_{1.00f, 0.25f, 0.80f, 1.0f},
-      ground_{0.85f, 0.65f, 0.25f, 1.0f}, other_{0.70f, 0.70f, 0.72f, 0.8f};
+      ground_{0.62f, 0.45f, 0.98f, 1.0f}, other_{0.70f, 0.70f, 0.72f, 0.8f};
 };
 
 }  // namespace hdprior::render
