@@ -77,11 +77,10 @@ int runSnapshot(const std::vector<std::string>& args) {
   // The pipeline and the NDT cells need the matcher's map; the others load faster without it.
   const std::unique_ptr<HdMap> map = analysisNeeded || ndtCells ? loadPriorMap(log, config)
                                                                 : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
-  std::optional<render::Analysis> analysis;
-  if (analysisNeeded) analysis = runAnalysis(log, *map, config, keyframe);
-  const size_t frame = cl.has("frame") ? size_t(frameOption) : analysis->inspection->frame;
+  render::Analysis analysis = analysisNeeded ? runAnalysis(log, *map, config, keyframe) : render::Analysis{};
+  const size_t frame = cl.has("frame") ? size_t(frameOption) : analysis.inspection->frame;
   render::Snapshotter snapshotter(log, *map, options);
-  if (analysis) snapshotter.setAnalysis(std::move(*analysis));
+  snapshotter.setAnalysis(std::move(analysis));
   render::writePng(out, snapshotter.render(frame));
   std::printf("wrote %s (%dx%d, frame %zu)\n", out.string().c_str(), options.width, options.height, frame);
   return 0;

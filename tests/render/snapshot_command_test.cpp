@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <string>
 
@@ -32,6 +33,19 @@ TEST(SnapshotCommand, WritesThePngOfTheGolden) {
   EXPECT_EQ(checkGolden(image, "frame0_top_all"), "");
 }
 
+// The landscape view of a keyframe: the pipeline runs inside the command (the matcher untimed by
+// the config file, as in the golden test).
+TEST(SnapshotCommand, DrawsTheLandscapeViewOfAKeyframe) {
+  const fs::path dir = freshOutputDir("snapshot_command_landscape");
+  const fs::path config = dir / "config.json", out = dir / "landscape.png";
+  std::ofstream(config) << R"({"match": {"time_budget_ms": 1000000}})";
+  const CommandResult r = runHdprior("snapshot " + quoted(sharedLog()) + " --keyframe 0 --view landscape --size 640x360 --config " +
+                                     quoted(config) + " --out " + quoted(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("frame 0"), std::string::npos) << r.out;
+  EXPECT_EQ(checkGolden(readPng(out), "real_landscape_view"), "");
+}
+
 struct BadInput {
   const char* name;
   std::string args;  // after LOG; --out is added
@@ -59,7 +73,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"bad_size", "--frame 0 --size 12xfoo", "--size"},
                       BadInput{"zero_size", "--frame 0 --size 0x100", "--size"},
                       BadInput{"unknown_layer", "--frame 0 --layers sweep,clouds", "unknown layer"},
-                      BadInput{"unknown_view", "--frame 0 --view side", "--view"}),
+                      BadInput{"unknown_view", "--frame 0 --view side", "--view"},
+                      BadInput{"keyframe_out_of_range", "--keyframe 5", "out of range"},
+                      BadInput{"negative_keyframe", "--keyframe -2", "negative"},
+                      BadInput{"landscape_without_keyframe", "--frame 0 --view landscape", "--keyframe"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SnapshotCommand, UnwritableOutputFails) {
