@@ -50,7 +50,15 @@ TEST(SnapshotOptions, ParsesSizesViewsAndLayers) {
   for (const char* bad : {"640", "640x", "x360", "640x360x", "10x10", "640x99999", "-640x360", "640X360"})
     EXPECT_THROW(render::parseSize(bad, w, h), Error) << bad;
   EXPECT_EQ(render::parseView("orbit"), render::View::Orbit);
+  EXPECT_EQ(render::parseView("landscape"), render::View::Landscape);
+  EXPECT_EQ(render::parseView("inspector"), render::View::Inspector);
   EXPECT_THROW(render::parseView("Top"), Error);
+  EXPECT_EQ(render::defaultLayers(render::View::Landscape),
+            (std::vector<std::string>{"drivable", "landscape", "boundary", "road_points", "match"}));
+  // The analysis layers need the pipeline; the map's layers (and the NDT cells) do not.
+  for (const char* name : {"landscape", "odometry_trajectory", "optimized_trajectory", "keyframes", "road_points", "match"})
+    EXPECT_TRUE(render::needsAnalysis(name)) << name;
+  for (const char* name : {"ground", "ndt_cells", "trajectory", "sweep"}) EXPECT_FALSE(render::needsAnalysis(name)) << name;
   // Drawing order, not the order given.
   EXPECT_EQ(render::parseLayerList("ego,sweep,ground"), (std::vector<std::string>{"ground", "sweep", "ego"}));
   // "all" is the standard layers; the extras are drawn when named.
