@@ -44,7 +44,7 @@ int runSnapshot(const std::vector<std::string>& args) {
       args, {.valued = {"frame", "out", "size", "view", "layers", "keyframe", "config"}, .flags = {},
              .minPositional = 1, .maxPositional = 1,
              .usage = "hdprior snapshot LOG (--frame N | --keyframe K) --out FILE.png [--size 1280x720] "
-                      "[--view top|orbit|landscape|inspector] [--layers a,b,c] [--config FILE]\n"
+                      "[--view top|orbit|landscape|inspector] [--layers a,b,c] [--config FILE]; "
                       "  defaults: --view top, --layers all (top, orbit) | drivable,landscape,boundary,road_points,match "
                       "(landscape) | drivable,boundary,keyframes,road_points,match (inspector, non-ground shown); "
                       "landscape and inspector need --keyframe; --frame defaults to keyframe K's frame"});
