@@ -23,7 +23,9 @@ AppState::~AppState() = default;
 
 void AppState::open(LoadedLog loaded) {
   renderer_.reset();  // its layers point into the old log and map
+  bench_.reset();     // its session too
   loaded_ = std::move(loaded);
+  bench_ = std::make_unique<TuningBench>(*loaded_.log, Config{});
   scene_ = render::makeScene(*loaded_.log, *loaded_.map);
   renderer_ = std::make_unique<render::Renderer>();
   for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));
@@ -60,6 +62,20 @@ void AppState::goToFrame(long long index) {
   }
   error.reset();
   camera.follow(frame().cityTEgo.translation() - scene_.origin);
+}
+
+void AppState::pollBench() {
+  if (bench_ && bench_->poll()) renderer_->setAnalysis(bench_->analysis());
+}
+
+void AppState::inspectKeyframe(size_t k) {
+  bench_->selectKeyframe(k);
+  if (const auto& inspection = bench_->inspection()) goToFrame((long long)inspection->frame);
+  pollBench();
+}
+
+void AppState::matchKeyframeAtFrame() {
+  if (const auto k = bench_->keyframeAtFrame(frame().index)) inspectKeyframe(*k);
 }
 
 render::Layer* AppState::layer(const std::string& name) {
