@@ -70,7 +70,17 @@ void AppState::pollBench() {
 
 void AppState::inspectKeyframe(size_t k) {
   bench_->selectKeyframe(k);
-  if (const auto& inspection = bench_->inspection()) goToFrame((long long)inspection->frame);
+  if (const auto& inspection = bench_->inspection()) {
+    goToFrame((long long)inspection->frame);
+    if (focusOnMatch) {
+      // Top-down on the match, framing the cost landscape with some of the road around it.
+      const Eigen::Vector3d& e = inspection->match.estimate;
+      camera.topDown = true;
+      camera.followEgo = false;
+      camera.target = Eigen::Vector3d(e.x(), e.y(), inspection->keyframePose.translation().z()) - scene_.origin;
+      camera.topHeight = std::max(30.0, 5.0 * bench_->landscapeOptions.halfExtent);
+    }
+  }
   pollBench();
 }
 

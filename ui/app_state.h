@@ -77,6 +77,7 @@ class AppState {
   std::optional<GroundCursor> cursor;
   std::optional<Error> error;  // the last frame that failed to load, shown in the status bar
   bool autoMatch = true;       // the tuning panel re-matches on every parameter change
+  bool focusOnMatch = true;    // matching a keyframe turns the camera top-down onto it
   std::string selectTab;       // the bench tab to bring to the front on the next frame
   std::optional<std::filesystem::path> screenshotRequest;
 

@@ -129,11 +129,12 @@ void drawResult(AppState& state) {
   if (!r.reason.empty()) ImGui::TextWrapped("%s", r.reason.c_str());
   ImGui::Text("score %.1f (%.3f / point), inliers %.2f", r.score, r.scorePerPoint, r.inlierRatio);
   ImGui::Text("%zu points, %d iterations, %.1f ms", r.points, r.iterations, r.timeMs);
+  ImGui::TextDisabled("(yaw in degrees; error against the ground truth)");
   if (inspection->truth) {
     const Eigen::Vector3d e = planarError(*inspection->truth, r.estimate);
     const Eigen::Vector3d e0 = planarError(*inspection->truth, inspection->start);
-    ImGui::Text("error along %.3f  lateral %.3f m  yaw %.2f deg", e.x(), e.y(), e.z() / kDeg);
-    ImGui::TextDisabled("(start: along %.2f  lateral %.2f m  yaw %.2f deg)", e0.x(), e0.y(), e0.z() / kDeg);
+    ImGui::Text("error  along %.3f  lateral %.3f m  yaw %.2f", e.x(), e.y(), e.z() / kDeg);
+    ImGui::TextDisabled("start  along %.2f  lateral %.2f m  yaw %.2f", e0.x(), e0.y(), e0.z() / kDeg);
   }
 }
 
@@ -158,7 +159,9 @@ void drawNdtTab(AppState& state) {
   else {
     if (ImGui::Button("Match this keyframe")) state.matchKeyframeAtFrame();
     ImGui::SameLine();
-    ImGui::Checkbox("on every change", &state.autoMatch);
+    ImGui::Checkbox("on change", &state.autoMatch);
+    ImGui::SameLine();
+    ImGui::Checkbox("focus", &state.focusOnMatch);
   }
   drawResult(state);
   ImGui::PushItemWidth(150);
