@@ -1,6 +1,7 @@
 #include "ui/app_state.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
@@ -65,7 +66,9 @@ void AppState::goToFrame(long long index) {
 }
 
 void AppState::pollBench() {
-  if (bench_ && bench_->poll()) renderer_->setAnalysis(bench_->analysis());
+  if (!bench_ || !bench_->poll()) return;
+  renderer_->setAnalysis(bench_->analysis());
+  if (const auto frame = std::exchange(bench_->frameToShow, std::nullopt)) goToFrame((long long)*frame);
 }
 
 void AppState::inspectKeyframe(size_t k) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "engine/error.h"
 #include "engine/geom/se2.h"
@@ -58,7 +59,11 @@ TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config
 bool TuningBench::poll() {
   if (runner_.poll()) {
     refresh();
-    if (selected_ && *selected_ < keyframeCount()) matchSelected();
+    if (std::exchange(selectNewest_, false) && keyframeCount() > 0) selected_ = keyframeCount() - 1;
+    if (selected_ && *selected_ < keyframeCount()) {
+      matchSelected();
+      if (analysis_.inspection) frameToShow = analysis_.inspection->frame;
+    }
     changed_ = true;
   }
   return std::exchange(changed_, false);
@@ -86,6 +91,7 @@ void TuningBench::run() {
 void TuningBench::stepKeyframe() {
   if (!runner_.session()) runner_.restart(config);
   runner_.stepKeyframe();
+  selectNewest_ = true;
 }
 
 void TuningBench::optimize() { runner_.optimize(config.prior, config.graph); }

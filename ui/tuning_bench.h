@@ -31,7 +31,7 @@ class TuningBench {
   bool poll();
 
   void run();           // a new session with `config`, to the end, optimised
-  void stepKeyframe();  // the current session (or a new one) to its next keyframe
+  void stepKeyframe();  // the current session (or a new one) to its next keyframe, then inspects it
   void optimize();      // the graph with config.prior and config.graph
   // Selects keyframe k and matches it with config (road points, match options) from the pose the
   // run started its match from, offset by `startOffset` (dx forward, dy left, dyaw; its frame).
@@ -46,6 +46,7 @@ class TuningBench {
   std::optional<size_t> keyframeAtFrame(size_t frame);
   size_t keyframeCount();
   std::string message;  // the last error of a match or config file, shown in the panels
+  std::optional<size_t> frameToShow;  // set when a step made a keyframe: the app goes to its frame
 
   void saveConfig();
   void loadConfig();
@@ -57,6 +58,7 @@ class TuningBench {
   std::optional<size_t> selected_;
   render::Analysis analysis_;
   bool changed_ = false;
+  bool selectNewest_ = false;
 };
 
 // What the bench shows, as text lines (`report` in view scripts): the session, the inspected

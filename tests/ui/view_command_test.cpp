@@ -129,11 +129,13 @@ std::vector<double> numbersAfter(const std::string& text, const std::string& key
 TEST(ViewCommand, BenchRunsTheMatchAndTheOptimisationOfItsPanels) {
   const fs::path dir = freshOutputDir("view_bench");
   const fs::path ndt = dir / "ndt.png", pgo = dir / "pgo.png";
-  writeText(dir / "script.txt", "wait 2\nrun\nkeyframe 0\noffset 1 0.5 2\nreport\noptimize\ntab NDT\nwait 2\nscreenshot " +
+  writeText(dir / "script.txt", "wait 2\nstep-keyframe\nreport\nrun\nkeyframe 0\noffset 1 0.5 2\nreport\noptimize\ntab NDT\nwait 2\nscreenshot " +
                                     ndt.string() + "\ntab PGO\nwait 2\nreport\n");
   const CommandResult r = runWithDisplay(
       "view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(pgo), dir);
   ASSERT_EQ(r.status, 0) << r.err;
+  // Stepping by hand: the first sweep is the first keyframe, inspected at once.
+  EXPECT_NE(r.out.find("bench: sweeps 1/2 keyframes 1\nmatch: keyframe 0 frame 0"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bench: sweeps 2/2 keyframes 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("solve: iterations"), std::string::npos) << r.out;
   const std::vector<double> estimate = numbersAfter(r.out, "estimate ", 3);
