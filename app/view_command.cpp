@@ -5,6 +5,7 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "engine/error.h"
+#include "engine/pipeline/config.h"
 #include "engine/sim/demo_log.h"
 #include "render/snapshot.h"
 #include "ui/viewer.h"
@@ -36,10 +37,10 @@ void checkPngPath(const fs::path& out) {
 }  // namespace
 
 int runView(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size"}, .flags = {"exit"},
+  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size", "config"}, .flags = {"exit"},
                               .minPositional = 0, .maxPositional = 1,
                               .usage = "hdprior view [LOG] [--script FILE | --frames N --exit] "
-                                       "[--screenshot FILE.png] [--size 1280x800]"});
+                                       "[--screenshot FILE.png] [--size 1280x800] [--config FILE]"});
   ui::ViewerOptions options;
   render::parseSize(cl.value("size").value_or("1280x800"), options.width, options.height);
   if (cl.has("script") && (cl.has("frames") || cl.has("exit")))
@@ -57,6 +58,10 @@ int runView(const std::vector<std::string>& args) {
     checkPngPath(*screenshot);
     options.screenshot = fs::path(*screenshot);
     if (!options.scripted && options.frames == 0) throw Error("option --screenshot", "needs --script or --frames");
+  }
+  if (const auto config = cl.value("config")) {
+    options.config = loadConfig(*config);
+    options.configPath = fs::path(*config);
   }
   if (!cl.positional().empty()) {
     options.log = fs::path(cl.positional()[0]);

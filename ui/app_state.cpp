@@ -1,6 +1,7 @@
 #include "ui/app_state.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
@@ -23,7 +24,9 @@ AppState::~AppState() = default;
 
 void AppState::open(LoadedLog loaded) {
   renderer_.reset();  // its layers point into the old log and map
+  bench_.reset();     // its session too
   loaded_ = std::move(loaded);
+  bench_ = std::make_unique<TuningBench>(*loaded_.log, Config{});
   scene_ = render::makeScene(*loaded_.log, *loaded_.map);
   renderer_ = std::make_unique<render::Renderer>();
   for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));
@@ -60,6 +63,32 @@ void AppState::goToFrame(long long index) {
   }
   error.reset();
   camera.follow(frame().cityTEgo.translation() - scene_.origin);
+}
+
+void AppState::pollBench() {
+  if (!bench_ || !bench_->poll()) return;
+  renderer_->setAnalysis(bench_->analysis());
+  if (const auto frame = std::exchange(bench_->frameToShow, std::nullopt)) goToFrame((long long)*frame);
+}
+
+void AppState::inspectKeyframe(size_t k) {
+  bench_->selectKeyframe(k);
+  if (const auto& inspection = bench_->inspection()) {
+    goToFrame((long long)inspection->frame);
+    if (focusOnMatch) {
+      // Top-down on the match, framing the cost landscape with some of the road around it.
+      const Eigen::Vector3d& e = inspection->match.estimate;
+      camera.topDown = true;
+      camera.followEgo = false;
+      camera.target = Eigen::Vector3d(e.x(), e.y(), inspection->keyframePose.translation().z()) - scene_.origin;
+      camera.topHeight = std::max(30.0, 5.0 * bench_->landscapeOptions.halfExtent);
+    }
+  }
+  pollBench();
+}
+
+void AppState::matchKeyframeAtFrame() {
+  if (const auto k = bench_->keyframeAtFrame(frame().index)) inspectKeyframe(*k);
 }
 
 render::Layer* AppState::layer(const std::string& name) {

@@ -11,6 +11,7 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "ui/playback.h"
+#include "ui/tuning_bench.h"
 #include "ui/view_camera.h"
 
 namespace hdprior {
@@ -60,16 +61,32 @@ class AppState {
   render::Layer* layer(const std::string& name);
   const std::optional<render::HeightRange>& groundColorRange() const { return groundColorRange_; }
 
+  // The tuning bench of the open log (its pipeline session, tuned config, selected keyframe).
+  TuningBench& bench() { return *bench_; }
+  // Once a frame: hands a changed analysis to the renderer's layers.
+  void pollBench();
+  // Selects keyframe k, matches it with the tuned options and goes to its frame.
+  void inspectKeyframe(size_t k);
+  // The same for the keyframe nearest the current frame.
+  void matchKeyframeAtFrame();
+  // The window as drawn, to this PNG after the next draw (the viewer takes it).
+  void requestScreenshot(const std::filesystem::path& file) { screenshotRequest = file; }
+
   Playback playback;
   ViewCamera camera;
   std::optional<GroundCursor> cursor;
   std::optional<Error> error;  // the last frame that failed to load, shown in the status bar
+  bool autoMatch = true;       // the tuning panel re-matches on every parameter change
+  bool focusOnMatch = true;    // matching a keyframe turns the camera top-down onto it
+  std::string selectTab;       // the bench tab to bring to the front on the next frame
+  std::optional<std::filesystem::path> screenshotRequest;
 
  private:
   LoadedLog loaded_;
   render::Scene scene_;
   std::unique_ptr<render::Renderer> renderer_;
   std::optional<render::HeightRange> groundColorRange_;
+  std::unique_ptr<TuningBench> bench_;
 };
 
 }  // namespace hdprior::ui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -29,6 +30,16 @@ bool isUnitFraction(const std::string& s) {
   }
 }
 
+bool isNumber(const std::string& s) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(s, &used);
+    return used == s.size() && std::isfinite(v);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 bool isLayer(const std::string& s) {
   const auto& names = render::layerNames();
   return std::find(names.begin(), names.end(), s) != names.end();
@@ -38,7 +49,9 @@ bool isLayer(const std::string& s) {
 std::string checkArguments(const std::string& verb, const std::vector<std::string>& a) {
   static const std::map<std::string, size_t> arity = {{"frame", 1}, {"step", 1}, {"play", 1},    {"pause", 0},
                                                       {"view", 1},  {"layer", 2}, {"opacity", 2}, {"wait", 1},
-                                                      {"screenshot", 1}, {"exit", 0}};
+                                                      {"screenshot", 1}, {"exit", 0}, {"run", 0},
+                                                      {"step-keyframe", 0}, {"keyframe", 1}, {"match", 0},
+                                                      {"optimize", 0}, {"offset", 3}, {"tab", 1}, {"report", 0}};
   const auto it = arity.find(verb);
   if (it == arity.end()) return "unknown command '" + verb + "'";
   if (a.size() != it->second) return "'" + verb + "' takes " + std::to_string(it->second) + " argument(s)";
@@ -52,6 +65,10 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
   if ((verb == "layer" || verb == "opacity") && !isLayer(a[0])) return "unknown layer '" + a[0] + "'";
   if (verb == "layer" && a[1] != "on" && a[1] != "off" && a[1] != "toggle") return "'layer' needs on, off or toggle";
   if (verb == "opacity" && !isUnitFraction(a[1])) return "'opacity' needs a value in 0..1";
+  if (verb == "keyframe" && (!isInteger(a[0]) || a[0][0] == '-')) return "'keyframe' needs a non-negative integer";
+  if (verb == "offset" && !std::all_of(a.begin(), a.end(), isNumber)) return "'offset' needs three numbers";
+  if (verb == "tab" && std::find(kBenchTabs.begin(), kBenchTabs.end(), a[0]) == kBenchTabs.end())
+    return "'tab' needs Pipeline, NDT, PGO, Keyframe or Export";
   return "";
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +17,17 @@ namespace hdprior::ui {
 //   wait N                      draw N frames
 //   screenshot FILE.png         the window as drawn, panels included
 //   exit
+// The tuning bench (each waits for its work to finish):
+//   run                         the pipeline over the whole log with the tuned config, optimised
+//   step-keyframe               the session to its next keyframe
+//   keyframe K                  select keyframe K, match it with the tuned options, go to its frame
+//   match                       the same for the keyframe nearest the current frame
+//   offset DX DY DYAW_DEG       the tuning panel's start offset (forward, left, yaw); re-matches
+//   optimize                    "optimise now" with the tuned prior and graph options
+//   tab Pipeline|NDT|PGO|Keyframe|Export   bring a bench tab to the front
+//   report                      print what the bench shows (match, solve, ATE) to stdout
+inline constexpr std::array<const char*, 5> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Export"};
+
 struct ScriptCommand {
   std::string verb;
   std::vector<std::string> args;

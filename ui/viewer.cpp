@@ -20,9 +20,11 @@
 #include "render/view_cache.h"
 #include "render/window_context.h"
 #include "ui/camera_input.h"
+#include "ui/panels/bench_panel.h"
 #include "ui/panels/height_legend.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/open_log_panel.h"
+#include "ui/panels/plots_panel.h"
 #include "ui/panels/status_bar.h"
 #include "ui/panels/timeline_panel.h"
 
@@ -78,6 +80,8 @@ void Viewer::finishLoading() {
   if (!loading_.valid() || loading_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
     state_->open(loading_.get());
+    state_->bench().config = options_.config;
+    if (options_.configPath) state_->bench().configPath = *options_.configPath;
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;
     loadError_ = e.what();
@@ -111,6 +115,7 @@ void Viewer::runScript() {
       render::Layer& layer = *state_->layer(a[0]);
       layer.visible = a[1] == "toggle" ? !layer.visible : a[1] == "on";
     } else if (c.verb == "opacity") state_->layer(a[0])->opacity = std::stof(a[1]);
+    else if (runBenchCommand(c)) continue;
     else if (c.verb == "wait") {
       waitFrames_ = std::stoi(a[0]);
       return;
@@ -126,6 +131,42 @@ void Viewer::runScript() {
   // The end of the script: the final screenshot, then exit.
   if (options_.screenshot) screenshotAfterDraw_ = options_.screenshot;
   exitAfterDraw_ = true;
+}
+
+// The tuning bench's script commands; each waits for its work. False for other verbs.
+bool Viewer::runBenchCommand(const ScriptCommand& c) {
+  TuningBench& bench = state_->bench();
+  const auto finish = [&] {
+    bench.runner().wait();
+    state_->pollBench();
+    if (!bench.runner().error().empty()) throw Error("script line " + std::to_string(c.line), bench.runner().error());
+  };
+  if (c.verb == "run") {
+    bench.run();
+    finish();
+  } else if (c.verb == "step-keyframe") {
+    bench.stepKeyframe();
+    finish();
+  } else if (c.verb == "optimize") {
+    bench.optimize();
+    finish();
+  } else if (c.verb == "keyframe" || c.verb == "match") {
+    if (bench.keyframeCount() == 0) throw Error("script line " + std::to_string(c.line), "no keyframes yet: 'run' or 'step-keyframe' first");
+    if (c.verb == "keyframe") state_->inspectKeyframe(std::min<size_t>(std::stoull(c.args[0]), bench.keyframeCount() - 1));
+    else state_->matchKeyframeAtFrame();
+    if (!bench.message.empty()) throw Error("script line " + std::to_string(c.line), bench.message);
+  } else if (c.verb == "offset") {
+    bench.startOffset = {std::stod(c.args[0]), std::stod(c.args[1]), std::stod(c.args[2]) * std::numbers::pi / 180.0};
+    bench.matchSelected();
+    state_->pollBench();
+  } else if (c.verb == "tab") {
+    state_->selectTab = c.args[0];
+  } else if (c.verb == "report") {
+    std::printf("%s", benchReport(bench).c_str());
+  } else {
+    return false;
+  }
+  return true;
 }
 
 void Viewer::updateCursor() {
@@ -151,6 +192,8 @@ void Viewer::drawPanels() {
     return;
   }
   drawLayersPanel(*state_);
+  drawBenchPanel(*state_);
+  drawPlotsPanel(*state_);
   drawTimelinePanel(*state_);
   drawStatusBar(*state_);
   drawHeightLegend(*state_);
@@ -173,6 +216,7 @@ void Viewer::frame() {
   ImGui::NewFrame();
   const int w = window_->framebufferWidth(), h = window_->framebufferHeight();
   if (state_->hasLog()) {
+    state_->pollBench();
     handleViewInput(*state_, float(h));
     state_->goToFrame((long long)state_->playback.advance(state_->frame().index, state_->log().sweepTimestamps(), dt));
     updateCursor();
@@ -205,6 +249,16 @@ void Viewer::frame() {
   if (screenshotAfterDraw_) {
     takeScreenshot(*screenshotAfterDraw_);
     screenshotAfterDraw_.reset();
+  }
+  if (state_->screenshotRequest) {
+    try {
+      std::filesystem::create_directories(state_->screenshotRequest->parent_path());
+      takeScreenshot(*state_->screenshotRequest);
+      state_->bench().message = "wrote " + state_->screenshotRequest->string();
+    } catch (const std::exception& e) {
+      state_->bench().message = e.what();
+    }
+    state_->screenshotRequest.reset();
   }
   if (exitAfterDraw_) stop_ = true;
   window_->swapBuffers();

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/pipeline/config.h"
 #include "ui/app_state.h"
 #include "ui/view_script.h"
 
@@ -25,6 +26,8 @@ struct ViewerOptions {
   int frames = 0;  // > 0: after this many frames with the log open (or without a log), screenshot and/or exit
   bool exitAfterFrames = false;
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
+  Config config;                                    // the tuning bench starts from it ...
+  std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
   bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)
@@ -50,6 +53,7 @@ class Viewer {
   void startLoading(const std::filesystem::path& dir, bool fromOptions);
   void finishLoading();
   void runScript();
+  bool runBenchCommand(const ScriptCommand& command);
   void updateCursor();
   void drawPanels();
   void takeScreenshot(const std::filesystem::path& file);

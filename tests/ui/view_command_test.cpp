@@ -112,6 +112,54 @@ TEST(ViewCommand, ScriptedSessionUnderXvfbShowsMapPointsAndPanels) {
   EXPECT_GT(top.distinctColors, 3000u);
 }
 
+// The numbers after `key` in text, e.g. "estimate 1 2 3" -> {1, 2, 3}.
+std::vector<double> numbersAfter(const std::string& text, const std::string& key, size_t count) {
+  std::vector<double> values;
+  const size_t at = text.find(key);
+  if (at == std::string::npos) return values;
+  std::istringstream in(text.substr(at + key.size()));
+  double v;
+  while (values.size() < count && in >> v) values.push_back(v);
+  return values;
+}
+
+// The tuning bench from a script, as its buttons do: run the pipeline, select and match a keyframe
+// from an offset start in the NDT panel, optimise; the numbers are the engine's (the same estimate
+// as `hdprior match` from the same start) and the window shows the bench.
+TEST(ViewCommand, BenchRunsTheMatchAndTheOptimisationOfItsPanels) {
+  const fs::path dir = freshOutputDir("view_bench");
+  const fs::path ndt = dir / "ndt.png", pgo = dir / "pgo.png";
+  writeText(dir / "script.txt", "wait 2\nstep-keyframe\nreport\nrun\nkeyframe 0\noffset 1 0.5 2\nreport\noptimize\ntab NDT\nwait 2\nscreenshot " +
+                                    ndt.string() + "\ntab PGO\nwait 2\nreport\n");
+  const CommandResult r = runWithDisplay(
+      "view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(pgo), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Stepping by hand: the first sweep is the first keyframe, inspected at once.
+  EXPECT_NE(r.out.find("bench: sweeps 1/2 keyframes 1\nmatch: keyframe 0 frame 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("bench: sweeps 2/2 keyframes 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("solve: iterations"), std::string::npos) << r.out;
+  const std::vector<double> estimate = numbersAfter(r.out, "estimate ", 3);
+  ASSERT_EQ(estimate.size(), 3u) << r.out;
+
+  const CommandResult cli = runHdprior("match " + quoted(sharedLog()) + " --frame 0 --init 1,0.5,2");
+  ASSERT_EQ(cli.status, 0) << cli.err;
+  const std::string json = cli.out.substr(cli.out.find("\"estimate\""));
+  EXPECT_NEAR(std::strtod(json.c_str() + json.find("\"x\":") + 4, nullptr), estimate[0], 1e-3) << cli.out;
+  EXPECT_NEAR(std::strtod(json.c_str() + json.find("\"y\":") + 4, nullptr), estimate[1], 1e-3) << cli.out;
+  const std::vector<double> error = numbersAfter(r.out, "lateral ", 1);
+  ASSERT_EQ(error.size(), 1u);
+  EXPECT_LT(std::abs(error[0]), 0.25);  // the real-data target: back within 0.25 m laterally from 0.5 m off
+
+  for (const fs::path& shot : {ndt, pgo}) {
+    const render::Image image = readPng(shot);
+    size_t text = 0;  // white text in the bench panel on the right
+    for (int y = 40; y < 600; ++y)
+      for (int x = image.width - 350; x < image.width - 10; ++x)
+        if (image.pixel(x, y)[0] > 200 && image.pixel(x, y)[1] > 200 && image.pixel(x, y)[2] > 200) ++text;
+    EXPECT_GT(text, 2000u) << shot << ": the bench panel is missing";
+  }
+}
+
 TEST(ViewCommand, FramesAndExitTakesAScreenshot) {
   const fs::path dir = freshOutputDir("view_frames");
   const fs::path shot = dir / "shot.png";

@@ -20,6 +20,15 @@ TEST(ViewScript, ParsesCommandsSkippingCommentsAndBlankLines) {
   EXPECT_EQ(commands[8].verb, "exit");
 }
 
+TEST(ViewScript, ParsesTheBenchCommands) {
+  const auto commands =
+      ui::parseViewScript("run\nstep-keyframe\nkeyframe 3\nmatch\noffset 0.5 -1 2.5\noptimize\ntab PGO\nreport\n", "s.txt");
+  ASSERT_EQ(commands.size(), 8u);
+  EXPECT_EQ(commands[2].args, std::vector<std::string>{"3"});
+  EXPECT_EQ(commands[4].args, (std::vector<std::string>{"0.5", "-1", "2.5"}));
+  EXPECT_EQ(commands[6].args, std::vector<std::string>{"PGO"});
+}
+
 TEST(ViewScript, RejectsBadLinesNamingTheLine) {
   const std::pair<const char*, const char*> bad[] = {
       {"frame 0\nfly away\n", "line 2: unknown command 'fly'"},
@@ -31,6 +40,11 @@ TEST(ViewScript, RejectsBadLinesNamingTheLine) {
       {"play 3x\n", "1x, 2x, 5x or max"},
       {"view side\n", "top or orbit"},
       {"wait 2 3\n", "takes 1"},
+      {"run now\n", "takes 0"},
+      {"keyframe -2\n", "non-negative integer"},
+      {"offset 1 x 2\n", "three numbers"},
+      {"offset 1 2\n", "takes 3"},
+      {"tab Plots\n", "Pipeline, NDT, PGO, Keyframe or Export"},
   };
   for (const auto& [text, message] : bad) {
     try {

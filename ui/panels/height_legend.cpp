@@ -45,7 +45,7 @@ render::SweepColoring sweepColoring(AppState& state) {
 
 void drawHeightLegend(AppState& state) {
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kLegendWidth - 8, 8));
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kBenchPanelWidth - kLegendWidth - 8, 8));
   ImGui::SetNextWindowSize(ImVec2(kLegendWidth, 0));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("Legend", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize);

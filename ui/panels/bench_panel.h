@@ -1,0 +1,17 @@
+#pragma once
+
+namespace hdprior::ui {
+class AppState;
+
+// The tuning bench on the right: tabs Pipeline (run / step / cancel), NDT (matcher parameters, match
+// this keyframe, cost landscape), PGO (optimise now), Keyframe (inspector) and Export.
+void drawBenchPanel(AppState& state);
+
+// Each tab's contents (one file each).
+void drawPipelineTab(AppState& state);
+void drawNdtTab(AppState& state);
+void drawPgoTab(AppState& state);
+void drawKeyframeTab(AppState& state);
+void drawExportTab(AppState& state);
+
+}  // namespace hdprior::ui

@@ -1,0 +1,164 @@
+#include "ui/tuning_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "engine/error.h"
+#include "engine/geom/se2.h"
+#include "engine/map/hd_map.h"
+#include "engine/odom/odometry.h"
+
+namespace hdprior::ui {
+
+std::string benchReport(TuningBench& bench) {
+  std::string out;
+  char line[320];
+  const Session* session = bench.runner().session();
+  if (!session) return "bench: no session\n";
+  std::snprintf(line, sizeof line, "bench: sweeps %zu/%zu keyframes %zu\n", session->sweepsDone(), session->sweepCount(),
+                session->odometry().keyframes().size());
+  out += line;
+  if (const auto& in = bench.inspection()) {
+    const MatchResult& r = in->match;
+    const double deg = 180.0 / M_PI;
+    std::snprintf(line, sizeof line,
+                  "match: keyframe %zu frame %zu status %s start %.4f %.4f %.4f estimate %.4f %.4f %.4f score %.2f "
+                  "iterations %d path %zu\n",
+                  in->keyframe, in->frame, toString(r.status), in->start.x(), in->start.y(), in->start.z() * deg,
+                  r.estimate.x(), r.estimate.y(), r.estimate.z() * deg, r.score, r.iterations, r.path.size());
+    out += line;
+    if (in->truth) {
+      const Eigen::Vector3d e = planarError(*in->truth, r.estimate);
+      std::snprintf(line, sizeof line, "match error: along %.4f lateral %.4f yaw_deg %.4f\n", e.x(), e.y(), e.z() * deg);
+      out += line;
+    }
+  }
+  if (const auto& s = bench.runner().lastSolve()) {
+    std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, "ate rmse: odometry %.4f optimized %.4f\n", finiteRmse(bench.analysis().odometryError),
+                finiteRmse(bench.analysis().optimizedError));
+  return out + line;
+}
+
+double finiteRmse(const std::vector<double>& errors) {
+  double sum = 0;
+  size_t n = 0;
+  for (double e : errors) {
+    if (!std::isfinite(e)) continue;
+    sum += e * e;
+    ++n;
+  }
+  return n ? std::sqrt(sum / double(n)) : NAN;
+}
+
+TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config(config), runner_(log, config) {}
+
+bool TuningBench::poll() {
+  if (runner_.poll()) {
+    refresh();
+    if (std::exchange(selectNewest_, false) && keyframeCount() > 0) selected_ = keyframeCount() - 1;
+    if (selected_ && *selected_ < keyframeCount()) {
+      matchSelected();
+      if (analysis_.inspection) frameToShow = analysis_.inspection->frame;
+    }
+    changed_ = true;
+  }
+  return std::exchange(changed_, false);
+}
+
+void TuningBench::refresh() {
+  const Session* session = runner_.session();
+  if (!session) return;
+  std::optional<KeyframeInspection> inspection = std::move(analysis_.inspection);
+  std::optional<CostLandscape> landscape = std::move(analysis_.landscape);
+  analysis_ = render::analysisOf(*session);
+  analysis_.inspection = std::move(inspection);
+  analysis_.landscape = std::move(landscape);
+}
+
+void TuningBench::run() {
+  if (runner_.busy()) return;
+  runner_.restart(config);
+  runner_.run();
+  selected_.reset();
+  analysis_ = {};
+  changed_ = true;
+}
+
+void TuningBench::stepKeyframe() {
+  if (!runner_.session()) runner_.restart(config);
+  runner_.stepKeyframe();
+  selectNewest_ = true;
+}
+
+void TuningBench::optimize() { runner_.optimize(config.prior, config.graph); }
+
+size_t TuningBench::keyframeCount() {
+  const Session* session = runner_.session();
+  return session ? session->odometry().keyframes().size() : 0;
+}
+
+std::optional<size_t> TuningBench::keyframeAtFrame(size_t frame) {
+  const Session* session = runner_.session();
+  if (!session || session->odometry().keyframes().empty()) return std::nullopt;
+  const auto& keyframes = session->odometry().keyframes();
+  size_t best = 0;
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    const auto distance = [frame](size_t f) { return f > frame ? f - frame : frame - f; };
+    if (distance(keyframes[k].frame) < distance(keyframes[best].frame)) best = k;
+  }
+  return best;
+}
+
+void TuningBench::selectKeyframe(size_t k) {
+  selected_ = k;
+  matchSelected();
+}
+
+void TuningBench::matchSelected() {
+  Session* session = runner_.session();
+  const HdMap* map = runner_.map();
+  if (!session || !map || !selected_) return;
+  try {
+    const size_t k = *selected_;
+    std::optional<Eigen::Vector3d> start;
+    if (startOffset != Eigen::Vector3d::Zero()) {
+      const Eigen::Vector3d base = k < session->matches().size() ? planarPose(session->matches()[k].predicted)
+                                                                  : planarPose(session->keyframePoses().at(k));
+      start = offsetPose(base, startOffset);
+    }
+    KeyframeInspection inspection = session->inspectKeyframe(k, config.roadPoints, config.match, start);
+    analysis_.landscape.reset();
+    if (landscapeEnabled && !inspection.roadPoints.empty()) {
+      analysis_.landscape = matchLandscape(*map, config.match, inspection.roadPoints, inspection.match.estimate, landscapeOptions);
+    }
+    analysis_.inspection = std::move(inspection);
+    message.clear();
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  changed_ = true;
+}
+
+void TuningBench::saveConfig() {
+  try {
+    hdprior::saveConfig(configPath, config);
+    message = "saved " + configPath.string();
+  } catch (const Error& e) {
+    message = e.what();
+  }
+}
+
+void TuningBench::loadConfig() {
+  try {
+    config = hdprior::loadConfig(configPath);
+    message = "loaded " + configPath.string();
+  } catch (const Error& e) {
+    message = e.what();
+  }
+}
+
+}  // namespace hdprior::ui

@@ -1,0 +1,71 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/match/cost_landscape.h"
+#include "engine/pipeline/config.h"
+#include "engine/pipeline/keyframe_inspection.h"
+#include "render/analysis.h"
+#include "ui/session_runner.h"
+
+namespace hdprior::ui {
+
+// The tuning and debugging bench of the open log: the configuration being tuned, the pipeline
+// session (run in the background by the SessionRunner), the selected keyframe with its re-computed
+// match and cost landscape, and the render::Analysis the layers draw. Every number comes from the
+// engine code the CLI runs.
+class TuningBench {
+ public:
+  TuningBench(const ArgoverseLog& log, const Config& config);
+
+  Config config;  // the next run, match and optimisation use it
+  std::filesystem::path configPath = "hdprior.json";
+  std::filesystem::path exportDir = "hdprior-export";
+  CostLandscapeOptions landscapeOptions;
+  bool landscapeEnabled = true;
+
+  SessionRunner& runner() { return runner_; }
+  // Once a UI frame; true when the analysis changed (a job ended, a keyframe was matched).
+  bool poll();
+
+  void run();           // a new session with `config`, to the end, optimised
+  void stepKeyframe();  // the current session (or a new one) to its next keyframe, then inspects it
+  void optimize();      // the graph with config.prior and config.graph
+  // Selects keyframe k and matches it with config (road points, match options) from the pose the
+  // run started its match from, offset by `startOffset` (dx forward, dy left, dyaw; its frame).
+  void selectKeyframe(size_t k);
+  void matchSelected();
+  Eigen::Vector3d startOffset = Eigen::Vector3d::Zero();
+
+  std::optional<size_t> selected() const { return selected_; }
+  const std::optional<KeyframeInspection>& inspection() const { return analysis_.inspection; }
+  const render::Analysis& analysis() const { return analysis_; }
+  // The keyframe nearest in time to a frame, when the session has keyframes.
+  std::optional<size_t> keyframeAtFrame(size_t frame);
+  size_t keyframeCount();
+  std::string message;  // the last error of a match or config file, shown in the panels
+  std::optional<size_t> frameToShow;  // set when a step made a keyframe: the app goes to its frame
+
+  void saveConfig();
+  void loadConfig();
+
+ private:
+  void refresh();
+
+  SessionRunner runner_;
+  std::optional<size_t> selected_;
+  render::Analysis analysis_;
+  bool changed_ = false;
+  bool selectNewest_ = false;
+};
+
+// What the bench shows, as text lines (`report` in view scripts): the session, the inspected
+// keyframe's match and its error against the truth, the last solve, the ATE.
+std::string benchReport(TuningBench& bench);
+
+// The RMSE of the finite values (per-pose errors are NaN where there is no ground truth); NaN if none.
+double finiteRmse(const std::vector<double>& errors);
+
+}  // namespace hdprior::ui
