@@ -115,6 +115,12 @@ TEST(CostLandscape, ValuesAreTheNdtScoreAtEachOffset) {
   EXPECT_DOUBLE_EQ(l.at(0, 4), score(pose + Eigen::Vector3d(1.0, -1.0, 0.0)));
   EXPECT_DOUBLE_EQ(l.at(3, 1), score(pose + Eigen::Vector3d(-0.5, 0.5, 0.0)));
   EXPECT_DOUBLE_EQ(l.yawScores[0], score(pose + Eigen::Vector3d(0.0, 0.0, -2.0 * kDeg)));
+  // Rows are written by index: the same for any thread count.
+  CostLandscapeOptions fine = o;
+  fine.step = 0.1;
+  const CostLandscape two = costLandscape(finestGrid(map), points, pose, fine);
+  fine.threads = 1;
+  EXPECT_EQ(costLandscape(finestGrid(map), points, pose, fine).scores, two.scores);
   o.step = 0.0;
   EXPECT_THROW(costLandscape(finestGrid(map), points, pose, o), Error);
 }
