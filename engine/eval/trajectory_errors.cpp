@@ -61,9 +61,11 @@ AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<
     const SE3 E = gt[i].inverse() * est[i];
     r.translationErrors.push_back(E.translation().norm());
     r.rotationErrorsDeg.push_back(angleDeg(E));
+    r.lateralErrors.push_back(std::abs(E.translation().y()));
   }
   r.translation = errorStats(r.translationErrors);
   r.rotationDeg = errorStats(r.rotationErrorsDeg);
+  r.lateral = errorStats(r.lateralErrors);
   return r;
 }
 

@@ -23,10 +23,11 @@ struct AssociatedPoses {
 AssociatedPoses associateByTime(const PoseTrajectory& gt, const PoseTrajectory& estimate);
 
 // Absolute trajectory error as in the paper: E_i = Q_i^-1 P_i, translation error |t(E_i)| (metres)
-// and rotation angle of E_i (degrees) per frame, after the alignment.
+// and rotation angle of E_i (degrees) per frame, after the alignment. The lateral error is |y| of
+// t(E_i): the offset across the ground truth's heading, in its vehicle frame.
 struct AteResult {
-  std::vector<double> translationErrors, rotationErrorsDeg;
-  ErrorStats translation, rotationDeg;
+  std::vector<double> translationErrors, rotationErrorsDeg, lateralErrors;
+  ErrorStats translation, rotationDeg, lateral;
 };
 AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<SE3>& alignedEstimate);
 

@@ -58,6 +58,11 @@ TEST(Ate, HandComputedPerFrameErrors) {
   EXPECT_NEAR(r.translation.mean, 4.0 / 3, 1e-12);
   EXPECT_NEAR(r.translation.rmse, std::sqrt(6.0 / 3), 1e-12);
   EXPECT_NEAR(r.translation.max, 2.0, 1e-12);
+  // Lateral: across the GT heading only (frame 1's offset is vertical, frame 2's is to the right).
+  EXPECT_NEAR(r.lateralErrors[0], 1.0, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[1], 0.0, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[2], 1.0, 1e-12);
+  EXPECT_NEAR(r.lateral.rmse, std::sqrt(2.0 / 3), 1e-12);
 }
 
 TEST(Alignment, EachModeRecoversItsTransform) {
