@@ -22,6 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr double kNoTimeBudgetMs = 1e6;  // the largest the configuration accepts
+
 struct Batch {
   std::vector<fs::path> logs;
   Config config;
@@ -108,14 +110,18 @@ render::Image rgba(const RgbImage& im) {
 }  // namespace
 
 int runEval(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "jobs"}, .flags = {"no-prior"}, .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior]",
+  const CommandLine cl(args, {.valued = {"out", "config", "jobs"}, .flags = {"no-prior", "keep-time-budget"}, .minPositional = 1,
+                              .maxPositional = 1,
+                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--keep-time-budget]",
                               .shortNames = {{'j', "jobs"}}});
   Batch batch;
   batch.out = outputFolder(cl.required("out"));
   const long long jobs = cl.integer("jobs", std::max(1u, std::thread::hardware_concurrency()));
   if (jobs < 1) throw Error("option --jobs", "must be at least 1");
   batch.config = configOption(cl);
+  // The matcher's wall-clock budget rejects matches that run long on a loaded machine, which would
+  // make a log's result depend on the number of workers and whatever else runs.
+  if (!cl.has("keep-time-budget")) batch.config.match.timeBudgetMs = kNoTimeBudgetMs;
   batch.options.priors = !cl.has("no-prior");
   const fs::path dir = cl.positional()[0];
   batch.logs = findArgoverseLogs(dir);

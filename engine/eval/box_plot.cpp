@@ -56,7 +56,7 @@ void drawAxis(RgbImage& im, const BoxPlotLayout& L, const BoxPlotOptions& o) {
     if (k > 0) hline(im, L.left, L.right, y, 1, kGrid);
     hline(im, L.left - kTickLength, L.left, y, 2, kAxis);
     const std::string label = tickLabel(v, L.tickDecimals);
-    drawText(im, L.left - kTickLength - 4 - textWidth(label, kFontScale), y - textHeight(kFontScale) / 2, label, kFontScale, kText);
+    drawText(im, L.left - kTickLength - 4 - textWidth(label, kFontScale), y - capHeight(kFontScale) / 2, label, kFontScale, kText);
   }
   drawCentred(im, (L.left + L.right) / 2, kMargin, o.title, kText);
   drawText(im, kMargin, (L.top + L.bottom) / 2 + textWidth(o.yTitle, kFontScale) / 2, o.yTitle, kFontScale, kText,

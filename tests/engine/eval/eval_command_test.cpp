@@ -56,7 +56,7 @@ class EvalCommand : public ::testing::Test {
       SimulationOptions sim;
       sim.townSeed = town;
       sim.seed = 1;
-      sim.seconds = 8.0;
+      sim.seconds = 6.0;
       sim.outDir = *dir_ / ("town" + std::to_string(town));
       const fs::path log = simulateLog(sim).dir;
       if (first.empty()) first = log;
@@ -136,7 +136,7 @@ TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorke
     EXPECT_EQ(rows1[i], rows2[i]) << "row " << i;
   }
   EXPECT_EQ(slurp(out1 / "table.csv"), slurp(out2 / "table.csv"));
-  EXPECT_EQ(slurp(out1 / "rmse_boxplot.png"), png);
+  EXPECT_TRUE(slurp(out1 / "rmse_boxplot.png") == png);
 }
 
 TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
