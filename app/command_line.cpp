@@ -6,7 +6,29 @@
 
 namespace hdprior::app {
 
-CommandLine::CommandLine(const std::vector<std::string>& args, const Spec& spec) : usage_(spec.usage) {
+namespace {
+
+// Short options spelled as their long form: -j 2 -> --jobs 2, -j2 -> --jobs=2.
+std::vector<std::string> expandShortOptions(const std::vector<std::string>& args, const std::map<char, std::string>& names) {
+  std::vector<std::string> out;
+  for (const std::string& a : args) {
+    const auto it = a.size() >= 2 && a[0] == '-' && a[1] != '-' ? names.find(a[1]) : names.end();
+    if (it == names.end()) {
+      out.push_back(a);
+    } else {
+      std::string option = "--";
+      option.append(it->second);
+      if (a.size() > 2) option.append("=").append(a, 2);
+      out.push_back(option);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+CommandLine::CommandLine(const std::vector<std::string>& rawArgs, const Spec& spec) : usage_(spec.usage) {
+  const std::vector<std::string> args = expandShortOptions(rawArgs, spec.shortNames);
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a.rfind("--", 0) != 0 || a.size() == 2) {

@@ -16,6 +16,7 @@ class CommandLine {
     std::set<std::string> flags;   // options without a value: --no-prior
     size_t minPositional = 0, maxPositional = 0;
     std::string usage;
+    std::map<char, std::string> shortNames = {};  // {'j', "jobs"}: -j N and -jN mean --jobs N
   };
 
   CommandLine(const std::vector<std::string>& args, const Spec& spec);

@@ -14,5 +14,6 @@ int runSim(const std::vector<std::string>& args);
 int runMatch(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
 int runDemo(const std::vector<std::string>& args);
+int runEval(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -3,11 +3,11 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/progress_bar.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
-#include "engine/pipeline/pipeline_run.h"
-#include "engine/pipeline/run_outputs.h"
+#include "engine/pipeline/log_run.h"
 #include "engine/sim/demo_log.h"
 #include "engine/sim/log_writer.h"
 
@@ -38,16 +38,16 @@ void printRow(const char* name, const ErrorStats& s) {
 int runDemo(const std::vector<std::string>& args) {
   const CommandLine cl(args, {.valued = {"out", "town", "seconds"}, .flags = {}, .minPositional = 0, .maxPositional = 0,
                               .usage = "hdprior demo [--out DIR] [--town SEED --seconds N]"});
-  const std::filesystem::path out = cl.value("out").value_or("hdprior-demo");
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) throw Error(out.string(), "exists and is not a folder");
+  const std::filesystem::path out = outputFolder(cl.value("out").value_or("hdprior-demo"));
   const ArgoverseLog log(demoLog(cl, out));
   const Config config;
   RunMetrics metrics;
   for (const bool priors : {false, true}) {
     ProgressBar bar(priors ? "with priors" : "odometry");
-    const PipelineRun run = runPipeline(log, config, {.priors = priors}, [&](size_t d, size_t t) { bar(d, t); });
-    metrics = evaluateRun(run);
-    writeRunOutputs(out / (priors ? "priors" : "odometry"), log, run, metrics);
+    const EvaluatedRun r = runAndWriteLog(log, config, {.priors = priors}, out / (priors ? "priors" : "odometry"),
+                                          [&](size_t d, size_t t) { bar(d, t); });
+    const PipelineRun& run = r.run;
+    metrics = r.metrics;
     if (priors) {
       std::printf("log %s: %zu sweeps, %.0f m; matches %zu accepted, %zu degenerate, %zu rejected; %.1f sweeps/s with priors\n",
                   log.id().c_str(), run.estimate.size(), metrics.odometry.pathLength, metrics.matches.accepted,

@@ -20,6 +20,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"export-map", {hdprior::app::runExportMap, "write the HD-map rasters as GeoTIFFs: hdprior export-map LOG --out DIR"}},
       {"snapshot", {hdprior::app::runSnapshot, "draw a frame headless to PNG: hdprior snapshot LOG --frame N --out FILE.png"}},
       {"run", {hdprior::app::runRun, "odometry + HD-map priors + evaluation: hdprior run LOG --out DIR [--no-prior] [--config FILE]"}},
+      {"eval", {hdprior::app::runEval, "every log under DIR, in parallel, and the paper's table over them: hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior]"}},
       {"demo", {hdprior::app::runDemo, "simulate (or reuse) a town log, run with and without priors: hdprior demo [--out DIR] [--town SEED --seconds N]"}},
       {"sim", {hdprior::app::runSim, "simulate an Argoverse 2 log: hdprior sim (--town SEED | --map LOG) --out DIR"}},
       {"match", {hdprior::app::runMatch, "match a frame's road points to the map: hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--config FILE]"}},

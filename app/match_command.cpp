@@ -6,6 +6,7 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "engine/error.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
@@ -64,7 +65,7 @@ int runMatch(const std::vector<std::string>& args) {
   const long long frame = cl.integer("frame", -1);
   if (frame < 0) throw Error("option --frame", "must not be negative");
   const Eigen::Vector3d offset = parseOffset(cl.value("init").value_or("0,0,0"));
-  const Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
+  const Config config = configOption(cl);
   MatchOptions options = config.match;
   if (cl.value("backend")) options.backend = parseBackend(*cl.value("backend"));
   options.timeBudgetMs = cl.number("time-budget", options.timeBudgetMs);

@@ -3,12 +3,11 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/progress_bar.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
-#include "engine/pipeline/config.h"
-#include "engine/pipeline/pipeline_run.h"
-#include "engine/pipeline/run_outputs.h"
+#include "engine/pipeline/log_run.h"
 
 namespace hdprior::app {
 namespace {
@@ -39,15 +38,12 @@ void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetr
 int runRun(const std::vector<std::string>& args) {
   const CommandLine cl(args, {.valued = {"out", "config"}, .flags = {"no-prior"}, .minPositional = 1, .maxPositional = 1,
                               .usage = "hdprior run LOG --out DIR [--no-prior] [--config FILE]"});
-  const std::filesystem::path out = cl.required("out");
-  const Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) throw Error(out.string(), "exists and is not a folder");
+  const std::filesystem::path out = outputFolder(cl.required("out"));
+  const Config config = configOption(cl);
   const ArgoverseLog log(cl.positional()[0]);
   ProgressBar bar("run");
-  const PipelineRun run = runPipeline(log, config, {.priors = !cl.has("no-prior")}, [&](size_t d, size_t t) { bar(d, t); });
-  const RunMetrics metrics = evaluateRun(run);
-  writeRunOutputs(out, log, run, metrics);
-  printSummary(log, run, metrics, out);
+  const EvaluatedRun r = runAndWriteLog(log, config, {.priors = !cl.has("no-prior")}, out, [&](size_t d, size_t t) { bar(d, t); });
+  printSummary(log, r.run, r.metrics, out);
   return 0;
 }
 

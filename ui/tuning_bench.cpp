@@ -1,6 +1,7 @@
 #include "ui/tuning_bench.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -34,6 +35,15 @@ std::string benchReport(TuningBench& bench) {
       out += line;
     }
   }
+  if (const auto& l = bench.analysis().landscape) {
+    const auto [lo, hi] = std::minmax_element(l->scores.begin(), l->scores.end());
+    const auto [ylo, yhi] = std::minmax_element(l->yawScores.begin(), l->yawScores.end());
+    const size_t best = size_t(hi - l->scores.begin());
+    std::snprintf(line, sizeof line, "landscape: %dx%d score %.1f..%.1f max at offset %.2f %.2f; yaw %zu scores %.1f..%.1f\n",
+                  l->size, l->size, *lo, *hi, l->offset(int(best % l->size)), l->offset(int(best / l->size)),
+                  l->yawScores.size(), l->yawScores.empty() ? NAN : *ylo, l->yawScores.empty() ? NAN : *yhi);
+    out += line;
+  }
   if (const auto& s = bench.runner().lastSolve()) {
     std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
     out += line;
@@ -57,6 +67,7 @@ double finiteRmse(const std::vector<double>& errors) {
 TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config(config), runner_(log, config) {}
 
 bool TuningBench::poll() {
+  pollLandscape();
   if (runner_.poll()) {
     refresh();
     if (std::exchange(selectNewest_, false) && keyframeCount() > 0) selected_ = keyframeCount() - 1;
@@ -79,12 +90,53 @@ void TuningBench::refresh() {
   analysis_.landscape = std::move(landscape);
 }
 
+// The landscape takes a second or more (thousands of poses x thousands of points): it runs on its own
+// worker while the match result shows at once. A request made while one runs waits for it; only the
+// newest waiting request is kept.
+void TuningBench::requestLandscape(LandscapeRequest request) {
+  request.generation = ++landscapeGeneration_;
+  if (landscapeJob_.valid()) {
+    pendingLandscape_ = std::move(request);
+    return;
+  }
+  landscapeJobGeneration_ = request.generation;
+  landscapeJob_ = std::async(std::launch::async, [r = std::move(request)] {
+    const auto t0 = std::chrono::steady_clock::now();
+    CostLandscape l = matchLandscape(*r.map, r.match, r.points, r.center, r.options);
+    return std::pair(std::move(l), std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  });
+}
+
+void TuningBench::pollLandscape() {
+  if (!landscapeJob_.valid() || landscapeJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  auto [landscape, ms] = landscapeJob_.get();
+  if (landscapeJobGeneration_ == landscapeGeneration_) {
+    analysis_.landscape = std::move(landscape);
+    landscapeMs = ms;
+    changed_ = true;
+  }
+  if (pendingLandscape_) {
+    LandscapeRequest next = std::move(*pendingLandscape_);
+    pendingLandscape_.reset();
+    --landscapeGeneration_;  // requestLandscape numbers it again
+    requestLandscape(std::move(next));
+  }
+}
+
+void TuningBench::waitForLandscape() {
+  while (landscapeJob_.valid()) {
+    landscapeJob_.wait();
+    pollLandscape();
+  }
+}
+
 void TuningBench::run() {
   if (runner_.busy()) return;
   runner_.restart(config);
   runner_.run();
   selected_.reset();
   analysis_ = {};
+  ++landscapeGeneration_;  // a landscape still being computed belongs to the old session
   changed_ = true;
 }
 
@@ -122,6 +174,7 @@ void TuningBench::matchSelected() {
   Session* session = runner_.session();
   const HdMap* map = runner_.map();
   if (!session || !map || !selected_) return;
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     const size_t k = *selected_;
     std::optional<Eigen::Vector3d> start;
@@ -131,11 +184,10 @@ void TuningBench::matchSelected() {
       start = offsetPose(base, startOffset);
     }
     KeyframeInspection inspection = session->inspectKeyframe(k, config.roadPoints, config.match, start);
-    analysis_.landscape.reset();
-    if (landscapeEnabled && !inspection.roadPoints.empty()) {
-      analysis_.landscape = matchLandscape(*map, config.match, inspection.roadPoints, inspection.match.estimate, landscapeOptions);
-    }
+    if (!landscapeEnabled || inspection.roadPoints.empty()) analysis_.landscape.reset();
+    else requestLandscape({map, inspection.roadPoints, inspection.match.estimate, config.match, landscapeOptions});
     analysis_.inspection = std::move(inspection);
+    matchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     message.clear();
   } catch (const Error& e) {
     message = e.what();

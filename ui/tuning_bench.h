@@ -1,5 +1,8 @@
 #pragma once
 #include <filesystem>
+#include <future>
+#include <utility>
+#include <vector>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,19 +49,38 @@ class TuningBench {
   std::optional<size_t> keyframeAtFrame(size_t frame);
   size_t keyframeCount();
   std::string message;  // the last error of a match or config file, shown in the panels
+  double matchMs = 0.0;      // the last re-match: road points and match
+  double landscapeMs = 0.0;  // the last cost landscape (on its own worker)
+  bool landscapePending() const { return landscapeJob_.valid(); }
+  // Blocks until the landscape of the last match is there (scripts, tests).
+  void waitForLandscape();
   std::optional<size_t> frameToShow;  // set when a step made a keyframe: the app goes to its frame
 
   void saveConfig();
   void loadConfig();
 
  private:
+  struct LandscapeRequest {
+    const HdMap* map = nullptr;
+    std::vector<Eigen::Vector2d> points;
+    Eigen::Vector3d center;
+    MatchOptions match;
+    CostLandscapeOptions options;
+    size_t generation = 0;
+  };
   void refresh();
+  void requestLandscape(LandscapeRequest request);
+  void pollLandscape();
 
   SessionRunner runner_;
   std::optional<size_t> selected_;
   render::Analysis analysis_;
   bool changed_ = false;
   bool selectNewest_ = false;
+  // Declared after runner_: destroyed (waited for) before the map it reads.
+  std::future<std::pair<CostLandscape, double>> landscapeJob_;
+  std::optional<LandscapeRequest> pendingLandscape_;
+  size_t landscapeGeneration_ = 0, landscapeJobGeneration_ = 0;
 };
 
 // What the bench shows, as text lines (`report` in view scripts): the session, the inspected

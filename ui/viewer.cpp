@@ -154,10 +154,13 @@ bool Viewer::runBenchCommand(const ScriptCommand& c) {
     if (bench.keyframeCount() == 0) throw Error("script line " + std::to_string(c.line), "no keyframes yet: 'run' or 'step-keyframe' first");
     if (c.verb == "keyframe") state_->inspectKeyframe(std::min<size_t>(std::stoull(c.args[0]), bench.keyframeCount() - 1));
     else state_->matchKeyframeAtFrame();
+    bench.waitForLandscape();
+    state_->pollBench();
     if (!bench.message.empty()) throw Error("script line " + std::to_string(c.line), bench.message);
   } else if (c.verb == "offset") {
     bench.startOffset = {std::stod(c.args[0]), std::stod(c.args[1]), std::stod(c.args[2]) * std::numbers::pi / 180.0};
     bench.matchSelected();
+    bench.waitForLandscape();
     state_->pollBench();
   } else if (c.verb == "tab") {
     state_->selectTab = c.args[0];

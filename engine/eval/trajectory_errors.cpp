@@ -11,6 +11,12 @@ namespace {
 double angleDeg(const SE3& T) { return Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI; }
 double yawDeg(const SE3& T) { return std::atan2(T.rotation()(1, 0), T.rotation()(0, 0)) * 180.0 / M_PI; }
 
+double lateralOffset(const SE3& gt, const SE3& est) {
+  const double yaw = std::atan2(gt.rotation()(1, 0), gt.rotation()(0, 0));
+  const Eigen::Vector3d d = est.translation() - gt.translation();
+  return std::abs(-std::sin(yaw) * d.x() + std::cos(yaw) * d.y());
+}
+
 }  // namespace
 
 ErrorStats errorStats(std::vector<double> v) {
@@ -61,9 +67,11 @@ AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<
     const SE3 E = gt[i].inverse() * est[i];
     r.translationErrors.push_back(E.translation().norm());
     r.rotationErrorsDeg.push_back(angleDeg(E));
+    r.lateralErrors.push_back(lateralOffset(gt[i], est[i]));
   }
   r.translation = errorStats(r.translationErrors);
   r.rotationDeg = errorStats(r.rotationErrorsDeg);
+  r.lateral = errorStats(r.lateralErrors);
   return r;
 }
 

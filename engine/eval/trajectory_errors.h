@@ -23,10 +23,11 @@ struct AssociatedPoses {
 AssociatedPoses associateByTime(const PoseTrajectory& gt, const PoseTrajectory& estimate);
 
 // Absolute trajectory error as in the paper: E_i = Q_i^-1 P_i, translation error |t(E_i)| (metres)
-// and rotation angle of E_i (degrees) per frame, after the alignment.
+// and rotation angle of E_i (degrees) per frame, after the alignment. The lateral error is the
+// horizontal offset of P_i from Q_i across Q_i's heading (yaw), so roll and altitude do not enter.
 struct AteResult {
-  std::vector<double> translationErrors, rotationErrorsDeg;
-  ErrorStats translation, rotationDeg;
+  std::vector<double> translationErrors, rotationErrorsDeg, lateralErrors;
+  ErrorStats translation, rotationDeg, lateral;
 };
 AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<SE3>& alignedEstimate);
 

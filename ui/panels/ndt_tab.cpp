@@ -1,7 +1,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cstring>
+#include <vector>
 #include <numbers>
 
 #include "engine/geom/se2.h"
@@ -129,13 +131,31 @@ void drawResult(AppState& state) {
   if (!r.reason.empty()) ImGui::TextWrapped("%s", r.reason.c_str());
   ImGui::Text("score %.1f (%.3f / point), inliers %.2f", r.score, r.scorePerPoint, r.inlierRatio);
   ImGui::Text("%zu points, %d iterations, %.1f ms", r.points, r.iterations, r.timeMs);
-  ImGui::TextDisabled("(yaw in degrees; error against the ground truth)");
+  ImGui::TextDisabled("(yaw in degrees) road points + match %.0f ms", state.bench().matchMs);
+  if (state.bench().landscapePending()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled(", landscape ...");
+  } else if (state.bench().analysis().landscape) {
+    ImGui::SameLine();
+    ImGui::TextDisabled(", landscape %.0f ms", state.bench().landscapeMs);
+  }
   if (inspection->truth) {
     const Eigen::Vector3d e = planarError(*inspection->truth, r.estimate);
     const Eigen::Vector3d e0 = planarError(*inspection->truth, inspection->start);
     ImGui::Text("error  along %.3f  lateral %.3f m  yaw %.2f", e.x(), e.y(), e.z() / kDeg);
     ImGui::TextDisabled("start  along %.2f  lateral %.2f m  yaw %.2f", e0.x(), e0.y(), e0.z() / kDeg);
   }
+}
+
+// The landscape's score over yaw at the estimate's (x, y): a flat curve is an unobserved heading.
+void drawYawProfile(AppState& state) {
+  const auto& landscape = state.bench().analysis().landscape;
+  if (!landscape || landscape->yawScores.empty()) return;
+  std::vector<float> values(landscape->yawScores.begin(), landscape->yawScores.end());
+  char label[64];
+  std::snprintf(label, sizeof label, "score over yaw +-%.0f deg", landscape->options.yawHalfDeg);
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  ImGui::PlotLines("##yaw", values.data(), int(values.size()), 0, label, *lo, *hi, ImVec2(ImGui::GetContentRegionAvail().x, 60));
 }
 
 void drawConfigFile(AppState& state) {
@@ -164,6 +184,7 @@ void drawNdtTab(AppState& state) {
     ImGui::Checkbox("focus", &state.focusOnMatch);
   }
   drawResult(state);
+  drawYawProfile(state);
   ImGui::PushItemWidth(150);
   bool changed = false;
   if (ImGui::CollapsingHeader("Matcher", ImGuiTreeNodeFlags_DefaultOpen)) changed |= drawMatcher(state);

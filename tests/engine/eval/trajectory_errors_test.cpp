@@ -58,6 +58,29 @@ TEST(Ate, HandComputedPerFrameErrors) {
   EXPECT_NEAR(r.translation.mean, 4.0 / 3, 1e-12);
   EXPECT_NEAR(r.translation.rmse, std::sqrt(6.0 / 3), 1e-12);
   EXPECT_NEAR(r.translation.max, 2.0, 1e-12);
+  // Lateral: across the GT heading only (frame 1's offset is vertical, frame 2's is to the right).
+  EXPECT_NEAR(r.lateralErrors[0], 1.0, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[1], 0.0, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[2], 1.0, 1e-12);
+  EXPECT_NEAR(r.lateral.rmse, std::sqrt(2.0 / 3), 1e-12);
+}
+
+TEST(Ate, LateralIsHorizontalAcrossTheHeading) {
+  // A rolled and pitched ground-truth pose heading 30 deg: an altitude error has no lateral part, a
+  // horizontal offset perpendicular to the heading is all lateral, one along it none.
+  SE3 gt = pose(5, 5, 1, M_PI / 6);
+  gt.linear() = gt.linear() * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+                Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitX()).toRotationMatrix();  // yaw, pitch, roll
+  auto moved = [&](const Eigen::Vector3d& d) {
+    SE3 p = gt;
+    p.translation() += d;
+    return p;
+  };
+  const Eigen::Vector3d across(-std::sin(M_PI / 6), std::cos(M_PI / 6), 0), along(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);
+  const AteResult r = absoluteTrajectoryError({gt, gt, gt}, {moved({0, 0, 0.7}), moved(0.4 * across), moved(0.9 * along)});
+  EXPECT_NEAR(r.lateralErrors[0], 0.0, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[1], 0.4, 1e-12);
+  EXPECT_NEAR(r.lateralErrors[2], 0.0, 1e-12);
 }
 
 TEST(Alignment, EachModeRecoversItsTransform) {

@@ -1,0 +1,15 @@
+#pragma once
+#include <filesystem>
+
+#include "app/command_line.h"
+#include "engine/pipeline/config.h"
+
+namespace hdprior::app {
+
+// --config FILE (the one JSON configuration), or the defaults without it.
+Config configOption(const CommandLine& cl);
+
+// An output folder: returned as given when it does not exist yet or is a folder; throws otherwise.
+std::filesystem::path outputFolder(const std::filesystem::path& out);
+
+}  // namespace hdprior::app

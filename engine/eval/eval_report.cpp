@@ -1,0 +1,124 @@
+#include "engine/eval/eval_report.h"
+
+#include <cstdio>
+#include <functional>
+
+#include "engine/eval/box_plot.h"
+
+namespace hdprior {
+namespace {
+
+constexpr const char* kOptimizedName = "with HD-map priors";
+
+std::string number(double v, int decimals = 6) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*f", decimals, v);
+  return b;
+}
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string csvRow(const std::vector<std::string>& fields) {
+  std::string row;
+  for (size_t i = 0; i < fields.size(); ++i) row += (i ? "," : "") + csvField(fields[i]);
+  return row + "\n";
+}
+
+std::string rpeField(const RpeResult& r) { return r.segments ? number(r.translationPercent) : ""; }
+
+// The eight columns of one trajectory, or empty fields.
+void appendTrajectory(std::vector<std::string>& row, const std::optional<TrajectoryEvaluation>& e) {
+  if (!e) {
+    row.insert(row.end(), 8, "");
+    return;
+  }
+  const ErrorStats& t = e->ate.translation;
+  for (double v : {t.mean, t.median, t.rmse, t.std, t.max, e->ate.lateral.rmse}) row.push_back(number(v));
+  row.push_back(rpeField(e->rpe10));
+  row.push_back(rpeField(e->rpe100));
+}
+
+std::string averagingLine(const EvalSummary& s) {
+  return "ATE (m, city frame, every run starting at the first ground-truth pose): each column is the average over the " +
+         std::to_string(s.logs - s.failed) + " logs that went through (of " + std::to_string(s.logs) + "; " +
+         std::to_string(s.failed) + " failed) of that log's per-sweep statistic.";
+}
+
+void forEachRow(const EvalSummary& s, const std::function<void(const char*, const ErrorStats&)>& fn) {
+  fn("odometry", s.odometry);
+  if (s.optimized) fn(kOptimizedName, *s.optimized);
+}
+
+}  // namespace
+
+std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
+  std::vector<std::string> header = {"log_id", "path", "sweeps", "path_length_m"};
+  for (const char* t : {"odometry", "optimized"}) {
+    for (const char* c : {"ate_mean_m", "ate_median_m", "ate_rmse_m", "ate_std_m", "ate_max_m", "lateral_rmse_m",
+                          "rpe10_percent", "rpe100_percent"}) {
+      header.push_back(std::string(t) + "_" + c);
+    }
+  }
+  for (const char* c : {"matches_accepted", "matches_degenerate", "matches_rejected", "pipeline_s", "error"}) header.push_back(c);
+  std::string csv = csvRow(header);
+  for (const LogEvaluation& log : logs) {
+    std::vector<std::string> row = {log.id, log.path.string()};
+    if (!log.ok()) {
+      row.resize(header.size() - 1);
+      row.push_back(log.error);
+      csv += csvRow(row);
+      continue;
+    }
+    row.push_back(std::to_string(log.sweeps));
+    row.push_back(log.odometry ? number(log.odometry->pathLength, 3) : "");
+    appendTrajectory(row, log.odometry);
+    appendTrajectory(row, log.optimized);
+    if (log.optimized) {
+      for (size_t n : {log.matchesAccepted, log.matchesDegenerate, log.matchesRejected}) row.push_back(std::to_string(n));
+    } else {
+      row.insert(row.end(), 3, "");
+    }
+    row.push_back(number(log.pipelineSeconds, 2));
+    row.push_back("");
+    csv += csvRow(row);
+  }
+  return csv;
+}
+
+std::string summaryMarkdown(const EvalSummary& s) {
+  std::string md = averagingLine(s) + "\n\n| trajectory | logs | mean | median | rmse | std | max |\n|---|---:|---:|---:|---:|---:|---:|\n";
+  forEachRow(s, [&](const char* name, const ErrorStats& e) {
+    md += std::string("| ") + name + " | " + std::to_string(e.count);
+    for (double v : {e.mean, e.median, e.rmse, e.std, e.max}) md += " | " + number(v, 3);
+    md += " |\n";
+  });
+  return md;
+}
+
+std::string summaryCsv(const EvalSummary& s) {
+  std::string csv = csvRow({"trajectory", "logs", "failed_logs", "mean_m", "median_m", "rmse_m", "std_m", "max_m", "averaging"});
+  forEachRow(s, [&](const char* name, const ErrorStats& e) {
+    csv += csvRow({name, std::to_string(e.count), std::to_string(s.failed), number(e.mean), number(e.median), number(e.rmse),
+                   number(e.std), number(e.max), "mean over logs of each log's per-sweep ATE statistic"});
+  });
+  return csv;
+}
+
+RgbImage rmseBoxPlot(const std::vector<LogEvaluation>& logs) {
+  BoxPlotSeries odometry{"odometry", {}, {230, 120, 30}}, optimized{kOptimizedName, {}, {40, 100, 200}};
+  for (const LogEvaluation& log : logs) {
+    if (!log.ok()) continue;
+    if (log.odometry) odometry.values.push_back(log.odometry->ate.translation.rmse);
+    if (log.optimized) optimized.values.push_back(log.optimized->ate.translation.rmse);
+  }
+  std::vector<BoxPlotSeries> series = {odometry};
+  if (!optimized.values.empty()) series.push_back(optimized);
+  return drawBoxPlot(series, {.title = "ATE RMSE per log", .yTitle = "ATE RMSE (m)"});
+}
+
+}  // namespace hdprior

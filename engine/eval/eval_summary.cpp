@@ -1,0 +1,45 @@
+#include "engine/eval/eval_summary.h"
+
+namespace hdprior {
+namespace {
+
+void accumulate(ErrorStats& sum, const ErrorStats& s) {
+  ++sum.count;
+  sum.mean += s.mean;
+  sum.median += s.median;
+  sum.rmse += s.rmse;
+  sum.std += s.std;
+  sum.max += s.max;
+}
+
+ErrorStats averaged(ErrorStats sum) {
+  if (sum.count == 0) return sum;
+  const double n = double(sum.count);
+  sum.mean /= n;
+  sum.median /= n;
+  sum.rmse /= n;
+  sum.std /= n;
+  sum.max /= n;
+  return sum;
+}
+
+}  // namespace
+
+EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
+  EvalSummary s;
+  s.logs = logs.size();
+  ErrorStats odometry, optimized;
+  for (const LogEvaluation& log : logs) {
+    if (!log.ok()) {
+      ++s.failed;
+      continue;
+    }
+    if (log.odometry) accumulate(odometry, log.odometry->ate.translation);
+    if (log.optimized) accumulate(optimized, log.optimized->ate.translation);
+  }
+  s.odometry = averaged(odometry);
+  if (optimized.count > 0) s.optimized = averaged(optimized);
+  return s;
+}
+
+}  // namespace hdprior

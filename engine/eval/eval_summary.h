@@ -1,0 +1,34 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/eval/trajectory_errors.h"
+
+namespace hdprior {
+
+// One log of a batch evaluation (`hdprior eval`): its evaluations, or the error that stopped it.
+struct LogEvaluation {
+  std::string id;
+  std::filesystem::path path;
+  size_t sweeps = 0;
+  std::optional<TrajectoryEvaluation> odometry;
+  std::optional<TrajectoryEvaluation> optimized;  // with priors
+  size_t matchesAccepted = 0, matchesDegenerate = 0, matchesRejected = 0;
+  double pipelineSeconds = 0;
+  std::string error;  // empty when the log went through
+
+  bool ok() const { return error.empty(); }
+};
+
+// The paper's table over a batch: each ATE statistic (mean, median, rmse, std, max) is the average
+// over the logs that went through of that log's per-sweep statistic; `count` is how many logs.
+struct EvalSummary {
+  size_t logs = 0, failed = 0;
+  ErrorStats odometry;
+  std::optional<ErrorStats> optimized;  // when any successful log has an optimised trajectory
+};
+EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);
+
+}  // namespace hdprior

@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "engine/sim/log_writer.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::string field;
+  std::istringstream in(text);
+  while (std::getline(in, field, separator)) out.push_back(field);
+  return out;
+}
+
+// per_log.csv as rows of fields (no field of these logs is quoted but the error, which is last).
+std::vector<std::vector<std::string>> perLogRows(const fs::path& out) {
+  std::vector<std::vector<std::string>> rows;
+  for (const std::string& line : split(slurp(out / "per_log.csv"), '\n')) rows.push_back(split(line, ','));
+  return rows;
+}
+
+size_t column(const std::vector<std::string>& header, const std::string& name) {
+  const auto it = std::find(header.begin(), header.end(), name);
+  EXPECT_NE(it, header.end()) << name;
+  return size_t(it - header.begin());
+}
+
+std::string field(const std::vector<std::string>& row, size_t i) { return i < row.size() ? row[i] : ""; }
+
+}  // namespace
+
+// `hdprior eval` over two short simulated town drives and one log folder whose poses are truncated.
+class EvalCommand : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // ctest runs each test in its own process, in parallel: one folder per process.
+    dir_ = new fs::path(test::freshOutputDir("eval_logs_" + std::to_string(::getpid())));
+    fs::path first;
+    for (uint64_t town : {1, 2}) {
+      SimulationOptions sim;
+      sim.townSeed = town;
+      sim.seed = 1;
+      sim.seconds = 6.0;
+      sim.outDir = *dir_ / ("town" + std::to_string(town));
+      const fs::path log = simulateLog(sim).dir;
+      if (first.empty()) first = log;
+    }
+    const fs::path broken = *dir_ / "broken";
+    fs::create_directories(broken / "sensors" / "lidar");
+    const std::string poses = slurp(first / "city_SE3_egovehicle.feather");
+    std::ofstream(broken / "city_SE3_egovehicle.feather", std::ios::binary) << poses.substr(0, poses.size() / 3);
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static fs::path* dir_;
+};
+fs::path* EvalCommand::dir_ = nullptr;
+
+TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorkers) {
+  const fs::path out2 = dir_->parent_path() / (dir_->filename().string() + "_out2");
+  const auto r = test::runHdprior("eval " + dir_->string() + " --out " + out2.string() + " -j 2");
+  EXPECT_EQ(r.status, 2) << r.err;
+  // One error line, naming the broken log and its file; one progress line per log.
+  const auto errLines = split(r.err, '\n');
+  size_t errors = 0, progress = 0;
+  for (const std::string& line : errLines) {
+    if (line.rfind("hdprior eval: ", 0) == 0) {
+      ++errors;
+      EXPECT_NE(line.find("log broken: "), std::string::npos) << line;
+      EXPECT_NE(line.find("broken/city_SE3_egovehicle.feather: "), std::string::npos) << line;
+    }
+    if (line.rfind("[", 0) == 0 && line.find("/3] ") != std::string::npos) ++progress;
+  }
+  EXPECT_EQ(errors, 1u) << r.err;
+  EXPECT_EQ(progress, 3u) << r.err;
+
+  const auto rows = perLogRows(out2);
+  ASSERT_EQ(rows.size(), 4u);
+  const auto& header = rows[0];
+  const size_t error = column(header, "error"), odoMean = column(header, "odometry_ate_mean_m"),
+               optRmse = column(header, "optimized_ate_rmse_m"), seconds = column(header, "pipeline_s");
+  std::vector<std::vector<std::string>> good;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    if (field(rows[i], error).empty()) {
+      good.push_back(rows[i]);
+      EXPECT_FALSE(field(rows[i], optRmse).empty());
+      EXPECT_TRUE(fs::exists(out2 / rows[i][0] / "metrics.json")) << rows[i][0];
+      EXPECT_TRUE(fs::exists(out2 / rows[i][0] / "optimized.tum")) << rows[i][0];
+    } else {
+      EXPECT_EQ(rows[i][0], "broken");
+      EXPECT_NE(field(rows[i], error).find("city_SE3_egovehicle.feather"), std::string::npos);
+    }
+  }
+  ASSERT_EQ(good.size(), 2u);
+
+  // The table averages the two good logs.
+  const auto table = split(slurp(out2 / "table.csv"), '\n');
+  ASSERT_EQ(table.size(), 3u);
+  const auto odometry = split(table[1], ',');
+  EXPECT_EQ(odometry[0], "odometry");
+  EXPECT_EQ(odometry[1], "2");
+  EXPECT_EQ(odometry[2], "1");
+  EXPECT_NEAR(std::stod(odometry[3]), (std::stod(good[0][odoMean]) + std::stod(good[1][odoMean])) / 2, 2e-6);
+  const auto optimized = split(table[2], ',');
+  EXPECT_NEAR(std::stod(optimized[5]), (std::stod(good[0][optRmse]) + std::stod(good[1][optRmse])) / 2, 2e-6);
+  EXPECT_NE(slurp(out2 / "table.md").find("average over the 2 logs that went through (of 3; 1 failed)"), std::string::npos);
+  const std::string png = slurp(out2 / "rmse_boxplot.png");
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  for (const auto& entry : fs::directory_iterator(out2)) EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
+
+  // One worker: the same rows but for the timing column.
+  const fs::path out1 = dir_->parent_path() / (dir_->filename().string() + "_out1");
+  const auto r1 = test::runHdprior("eval " + dir_->string() + " --out " + out1.string() + " -j1");
+  EXPECT_EQ(r1.status, 2) << r1.err;
+  auto rows1 = perLogRows(out1), rows2 = rows;
+  ASSERT_EQ(rows1.size(), rows2.size());
+  for (size_t i = 0; i < rows1.size(); ++i) {
+    if (seconds < rows1[i].size()) rows1[i][seconds].clear();
+    if (seconds < rows2[i].size()) rows2[i][seconds].clear();
+    EXPECT_EQ(rows1[i], rows2[i]) << "row " << i;
+  }
+  EXPECT_EQ(slurp(out1 / "table.csv"), slurp(out2 / "table.csv"));
+  EXPECT_TRUE(slurp(out1 / "rmse_boxplot.png") == png);
+}
+
+TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
+  const fs::path dir = test::freshOutputDir("eval_options");
+  const fs::path empty = dir / "empty", out = dir / "out";
+  fs::create_directories(empty);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"eval --out " + out.string(), "expected 1 positional argument(s), got 0"},
+      {"eval " + (dir / "missing").string() + " --out " + out.string(), "missing: folder not found"},
+      {"eval " + empty.string() + " --out " + out.string(), "empty: no Argoverse 2 logs under it"},
+      {"eval " + empty.string() + " --out " + out.string() + " -j x", "option --jobs: 'x' is not an integer"},
+      {"eval " + empty.string() + " --out " + out.string() + " -j 0", "option --jobs: must be at least 1"},
+      {"eval " + empty.string() + " -j 2", "option --out: is required"},
+  };
+  for (const auto& [args, message] : cases) {
+    const auto r = test::runHdprior(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("hdprior eval: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << " -> " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace hdprior
