@@ -44,8 +44,9 @@ void appendTrajectory(std::vector<std::string>& row, const std::optional<Traject
 }
 
 std::string averagingLine(const EvalSummary& s) {
+  const size_t ok = s.logs - s.failed;
   return "ATE (m, city frame, every run starting at the first ground-truth pose): each column is the average over the " +
-         std::to_string(s.logs - s.failed) + " logs that went through (of " + std::to_string(s.logs) + "; " +
+         std::to_string(ok) + (ok == 1 ? " log" : " logs") + " that went through (of " + std::to_string(s.logs) + "; " +
          std::to_string(s.failed) + " failed) of that log's per-sweep statistic.";
 }
 

@@ -97,6 +97,8 @@ TEST(EvalReport, TablesStateTheAveraging) {
   EXPECT_NE(md.find("average over the 2 logs that went through (of 3; 1 failed)"), std::string::npos) << md;
   EXPECT_NE(md.find("| odometry | 2 | 1.500 | 3.000 | 4.500 | 6.000 | 7.500 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| with HD-map priors | 2 | 0.150 | 0.300 | 0.450 | 0.600 | 0.750 |"), std::string::npos) << md;
+  EXPECT_NE(summaryMarkdown(summarizeLogs({okLog("a", 1, true)})).find("over the 1 log that went through (of 1; 0 failed)"),
+            std::string::npos);
   const auto rows = lines(summaryCsv(s));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0], "trajectory,logs,failed_logs,mean_m,median_m,rmse_m,std_m,max_m,averaging");
