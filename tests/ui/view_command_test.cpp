@@ -242,6 +242,7 @@ class ViewCommandBadInput : public ::testing::TestWithParam<BadViewInput> {};
 TEST_P(ViewCommandBadInput, FailsWithOneLine) {
   const fs::path dir = freshOutputDir(std::string("view_bad_") + GetParam().name);
   writeText(dir / "bad_script.txt", "wait 1\nfly away\n");
+  writeText(dir / "bad_config.json", "{\"match\": {\"outlier_ratio\": 7}}");
   std::string args = GetParam().args;
   for (const auto& [key, value] : {std::pair<std::string, std::string>{"LOG", quoted(sharedLog())},
                                    {"DIR", dir.string()}}) {
@@ -262,7 +263,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadViewInput{"bad_frames", "LOG --frames 0 --exit", "--frames"},
                       BadViewInput{"screenshot_folder", "LOG --frames 1 --exit --screenshot DIR/no/x.png",
                                    "folder does not exist"},
-                      BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"}),
+                      BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"},
+                      BadViewInput{"missing_config", "LOG --frames 1 --exit --config DIR/none.json", "none.json"},
+                      BadViewInput{"bad_config", "LOG --frames 1 --exit --config DIR/bad_config.json", "outlier_ratio"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Without an X server the window cannot open: one line naming GLFW, never a crash.

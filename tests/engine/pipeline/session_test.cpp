@@ -39,19 +39,26 @@ class SessionTest : public ::testing::Test {
 std::unique_ptr<ArgoverseLog> SessionTest::log_;
 std::unique_ptr<HdMap> SessionTest::map_;
 
+// Repeated runs are compared: no wall-clock match budget (under load it rejects matches at random).
+Config untimed() {
+  Config config;
+  config.match.timeBudgetMs = 1e6;
+  return config;
+}
+
 void expectSameTrajectory(const PoseTrajectory& a, const PoseTrajectory& b) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a.poses()[i].matrix() == b.poses()[i].matrix()) << "pose " << i;
 }
 
 TEST_F(SessionTest, SteppingCancellingAndResumingEqualsOneRun) {
-  Session whole(*log_, map_.get(), Config{});
+  Session whole(*log_, map_.get(), untimed());
   size_t calls = 0;
   ASSERT_TRUE(whole.run([&](size_t done, size_t total) { EXPECT_EQ(done, ++calls); EXPECT_EQ(total, log_->sweepCount()); }));
   EXPECT_TRUE(whole.done());
   whole.optimize();
 
-  Session parts(*log_, map_.get(), Config{});
+  Session parts(*log_, map_.get(), untimed());
   parts.stepKeyframe();
   parts.stepKeyframe();
   const size_t afterTwo = parts.sweepsDone();
@@ -72,19 +79,19 @@ TEST_F(SessionTest, SteppingCancellingAndResumingEqualsOneRun) {
 }
 
 TEST_F(SessionTest, FinishGivesWhatRunPipelineGives) {
-  Session session(*log_, map_.get(), Config{});
+  Session session(*log_, map_.get(), untimed());
   session.run();
   const PipelineRun run = session.finish(0.2);
-  const PipelineRun direct = runPipeline(*log_, Config{});
+  const PipelineRun direct = runPipeline(*log_, untimed());
   expectSameTrajectory(run.optimized, direct.optimized);
   EXPECT_EQ(run.mapPoints.size(), direct.mapPoints.size());
   EXPECT_EQ(run.odometry->keyframes().size(), direct.odometry->keyframes().size());
 }
 
 TEST_F(SessionTest, InspectingAKeyframeReproducesItsMatchAndLabelsItsSubmap) {
-  Session session(*log_, map_.get(), Config{});
+  Session session(*log_, map_.get(), untimed());
   session.run();
-  const Config config;
+  const Config config = untimed();
   for (size_t k : {size_t(1), session.matches().size() - 1}) {
     const KeyframeInspection in = session.inspectKeyframe(k, config.roadPoints, config.match);
     const KeyframeMatch& run = session.matches()[k];
@@ -115,7 +122,7 @@ TEST_F(SessionTest, InspectingAKeyframeReproducesItsMatchAndLabelsItsSubmap) {
 }
 
 TEST_F(SessionTest, ReoptimisingWithOtherWeightsChangesTheTrajectoryAndIsRepeatable) {
-  Session session(*log_, map_.get(), Config{});
+  Session session(*log_, map_.get(), untimed());
   session.run();
   session.optimize();
   const PoseTrajectory before = session.optimizedTrajectory();
@@ -132,20 +139,20 @@ TEST_F(SessionTest, ReoptimisingWithOtherWeightsChangesTheTrajectoryAndIsRepeata
     moved = std::max(moved, (after.poses()[i].translation() - before.poses()[i].translation()).norm());
   EXPECT_GT(moved, 1e-3);
   // Back to the original options: the original result again (a rebuilt graph, warm-started elsewhere).
-  session.optimize(Config{}.prior, Config{}.graph);
+  session.optimize(untimed().prior, untimed().graph);
   const PoseTrajectory back = session.optimizedTrajectory();
   for (size_t i = 0; i < back.size(); ++i)
     EXPECT_LT((back.poses()[i].translation() - before.poses()[i].translation()).norm(), 2e-3) << "pose " << i;
 }
 
 TEST_F(SessionTest, WithoutAMapItIsOdometryAlone) {
-  Session session(*log_, nullptr, Config{});
+  Session session(*log_, nullptr, untimed());
   EXPECT_FALSE(session.hasPriors());
   session.run();
   EXPECT_TRUE(session.matches().empty());
   EXPECT_TRUE(session.optimizedTrajectory().empty());
   EXPECT_EQ(session.keyframePoses().size(), session.odometry().keyframes().size());
-  EXPECT_THROW(session.inspectKeyframe(0, Config{}.roadPoints, Config{}.match), Error);
+  EXPECT_THROW(session.inspectKeyframe(0, untimed().roadPoints, untimed().match), Error);
 }
 
 }  // namespace hdprior
