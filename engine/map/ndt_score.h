@@ -13,6 +13,9 @@ enum class NdtLookup {
   ContainingCell,  // the one cell holding the point (fastest)
   FourNearest,     // the 2x2 cells whose centres surround the point (smoother; like Biber's
                    // four overlapping grids)
+  Bilinear,        // the same 2x2 cells weighted bilinearly by the point's place between their centres:
+                   // the score is continuous where the other two jump as points cross cell lines
+                   // (Magnusson's trilinear interpolation, in 2-D)
 };
 
 struct NdtScoreParams {
