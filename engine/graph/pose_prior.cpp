@@ -16,13 +16,18 @@ double priorAltitude(const GroundHeight& ground, double x, double y, double egoH
   return ground.bilinearAt(Eigen::Vector2d(x, y)) + egoHeight;
 }
 
-Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options) {
+Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
   const double largest = std::max(eig.eigenvalues().maxCoeff(), 0.0);
-  Eigen::Matrix3d observed = Eigen::Matrix3d::Zero();  // projector onto the observed directions
+  Eigen::Matrix3d observed = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i) {
     if (eig.eigenvalues()(i) > 1e-9 * largest && largest > 0.0) observed += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
   }
+  return observed;
+}
+
+Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options) {
+  const Eigen::Matrix3d observed = observedProjector(information);
   const double yaw = options.minSigmaYawDeg * std::numbers::pi / 180.0;
   const Eigen::Matrix3d floor = Eigen::Vector3d(options.minSigmaXY * options.minSigmaXY, options.minSigmaXY * options.minSigmaXY, yaw * yaw).asDiagonal();
   const Eigen::Matrix3d covariance = information.completeOrthogonalDecomposition().pseudoInverse() + observed * floor * observed;
@@ -31,7 +36,12 @@ Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const Pos
 
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
                         const PosePriorOptions& options) {
-  const Eigen::Vector3d& e = match.estimate;
+  // Where the match observes nothing (along a corridor) its estimate is arbitrary: the prior's
+  // place there is the odometry's, so the altitude is looked up where the vehicle most likely is.
+  const Eigen::Vector3d predicted(odometryPose.translation().x(), odometryPose.translation().y(), yawOf(odometryPose));
+  Eigen::Vector3d offset = match.estimate - predicted;
+  offset.z() = std::remainder(offset.z(), 2.0 * std::numbers::pi);
+  const Eigen::Vector3d e = predicted + observedProjector(match.information) * offset;
   const double z = priorAltitude(ground, e.x(), e.y(), options.egoHeight);
   PosePrior prior;
   prior.pose.linear() = Eigen::AngleAxisd(e.z(), Eigen::Vector3d::UnitZ()).toRotationMatrix() * levelRotation(odometryPose);

@@ -32,12 +32,16 @@ struct PosePriorOptions {
 // outside the raster's region of interest.
 double priorAltitude(const GroundHeight& ground, double x, double y, double egoHeight);
 
+// The projector onto the directions (x, y, yaw) in which an information matrix is not zero.
+Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information);
+
 // The match's information over (x, y, yaw) with the options' floors added to its covariance in the
 // directions the match observes; unobservable directions keep zero information.
 Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options);
 
 // Builds the prior from a match (its estimate and information over x, y, yaw) and the
-// odometry pose that supplies roll and pitch. Without altitude (NaN) z gets no information.
+// odometry pose that supplies roll and pitch, and the place in the directions the match does not
+// observe (where its information is zero). Without altitude (NaN) z gets no information.
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
                         const PosePriorOptions& options = {});
 

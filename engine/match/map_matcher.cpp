@@ -18,7 +18,9 @@ void validate(const MatchOptions& o) {
   const auto bad = [](const std::string& why) { throw Error("match options", why); };
   if (o.cellSizes.empty()) bad("cellSizes is empty");
   if (!(o.outlierRatio > 0 && o.outlierRatio < 1)) bad("outlierRatio must be in (0, 1)");
-  if (o.maxIterations < 1 || !(o.maxStepCells > 0) || !(o.maxStepYawDeg > 0)) bad("iterations or step bounds out of range");
+  if (o.maxIterations < 1 || !(o.maxStepCells > 0) || !(o.maxStepYawDeg > 0) || !(o.maxStepGain >= 1)) {
+    bad("iterations or step bounds out of range");
+  }
   if (!(o.translationTolerance > 0) || !(o.yawToleranceDeg > 0) || !(o.timeBudgetMs > 0)) bad("tolerances or time budget out of range");
   if (!(o.yawLength > 0) || !(o.degenerateRatio >= 0 && o.degenerateRatio < 1) || !(o.minInformation >= 0) ||
       !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {

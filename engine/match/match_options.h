@@ -20,11 +20,12 @@ struct MatchOptions {
   double outlierRatio = 0.55;
   NdtLookup lookup = NdtLookup::FourNearest;
   int maxIterations = 25;               // Newton iterations per level
-  int maxCoarseStride = 1;              // coarse levels may use every (size / finest)^2-th point, at most this (1: all; larger measured less robust)
+  int maxCoarseStride = 4;              // coarse levels use every (size / finest)^2-th point, at most this (1: all)
   double maxStepCells = 0.5;            // a step moves at most this many cells ...
   double maxStepYawDeg = 2.0;           // ... and turns at most this much
-  double translationTolerance = 1e-3;   // converged when a step is below these
-  double yawToleranceDeg = 1e-3;
+  double maxStepGain = 8.0;             // Newton steps may be lengthened up to this when the score is flatter than its model
+  double translationTolerance = 5e-3;   // converged when a step is below these (on the finest grid;
+  double yawToleranceDeg = 5e-3;        // a coarser one's grow with its cell size)
   double timeBudgetMs = 100.0;          // the match stops (status Rejected) beyond this
 
   // --- PCL's 3-D NDT on the same points at z = 0 (PclNdt) ---

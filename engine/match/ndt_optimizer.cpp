@@ -27,6 +27,15 @@ Eigen::Vector3d ascentDirection(const NdtScore& s, double yawLength) {
   return d.cwiseInverse().asDiagonal() * stepScaled;
 }
 
+// The four-cell score is rough: its local curvature overstates the trend, so full Newton steps
+// often gain more than their quadratic model predicts and crawl. A full step that gained
+// `gainRatio` times its linear prediction (1/2 on the model) measures the curvature along it;
+// the next step is lengthened (or shortened) towards where that 1-D parabola peaks.
+double nextStepGain(double gain, double gainRatio, double maxGain) {
+  const double peak = gainRatio >= 0.75 ? 2.0 : 1.0 / (2.0 * (1.0 - gainRatio));
+  return std::clamp(gain * std::clamp(peak, 0.5, 2.0), 1.0, maxGain);
+}
+
 }  // namespace
 
 NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span<const Eigen::Vector2d> all,
@@ -51,13 +60,16 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
     Eigen::Vector3d x = result.pose;
     NdtScore s = scoreNdt(*grid, points, x, params);
     const double maxStep = o.maxStepCells * grid->cellSize(), maxYaw = o.maxStepYawDeg * kDegree;
+    // A coarse level only seeds the next one: its tolerances grow with its cell size.
+    const double tolerance = o.translationTolerance * ratio, yawTolerance = o.yawToleranceDeg * kDegree * ratio;
+    double gain = 1.0;  // the Newton step's length factor, learnt along the way
     for (int it = 0; it < o.maxIterations; ++it) {
       if (std::chrono::steady_clock::now() > deadline) {
         result.timedOut = true;
         result.pose = x;
         return result;
       }
-      Eigen::Vector3d step = ascentDirection(s, o.yawLength);
+      Eigen::Vector3d step = gain * ascentDirection(s, o.yawLength);
       const double scale = std::min({1.0, maxStep / std::max(step.head<2>().norm(), 1e-12),
                                      maxYaw / std::max(std::abs(step.z()), 1e-12)});
       step *= scale;
@@ -71,6 +83,8 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
         const NdtDerivatives what = alpha == 1.0 ? NdtDerivatives::GradientAndHessian : NdtDerivatives::None;
         NdtScore trial = scoreNdt(*grid, points, candidate, params, what);
         if (trial.score >= s.score + 1e-4 * alpha * slope) {
+          gain = alpha == 1.0 ? nextStepGain(gain, (trial.score - s.score) / slope, o.maxStepGain)
+                              : std::max(1.0, gain * alpha);
           x = candidate;
           step *= alpha;
           moved = true;
@@ -81,7 +95,7 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
       ++result.iterations;
       result.path.push_back(x);
       if (!moved) break;
-      if (step.head<2>().norm() < o.translationTolerance && std::abs(step.z()) < o.yawToleranceDeg * kDegree) break;
+      if (step.head<2>().norm() < tolerance && std::abs(step.z()) < yawTolerance) break;
     }
     result.pose = x;
   }

@@ -24,7 +24,10 @@ struct NdtOptimization {
 // each from the previous optimum: Newton steps on the score with the Hessian made negative
 // definite (eigenvalues in units of x, y, yaw * yawLength lifted to a floor, so flat
 // directions take gradient steps instead of huge or backward Newton steps), step lengths
-// bounded per cell size, and a backtracking (Armijo) line search. Stops at the deadline.
+// bounded per cell size, a backtracking (Armijo) line search, and the step length learnt from how
+// far the score outran its quadratic model on the previous step (the four-cell score is rough, so
+// pure Newton steps crawl). Coarse levels use a subset of the points and looser tolerances: they
+// only seed the next level. Stops at the deadline.
 NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span<const Eigen::Vector2d> points,
                             const Eigen::Vector3d& initial, const MatchOptions& options,
                             std::chrono::steady_clock::time_point deadline);

@@ -109,6 +109,7 @@ Sections sectionsOf(Config& c) {
         {"lookup", choice(&mt.lookup, {"containing_cell", "four_nearest", "bilinear"})},
         {"max_iterations", &mt.maxIterations, 1, 1000},
         {"max_coarse_stride", &mt.maxCoarseStride, 1, 1000},
+        {"max_step_gain", &mt.maxStepGain, 1, 100},
         {"max_step_cells", &mt.maxStepCells, 0.01, 100},
         {"max_step_yaw_deg", &mt.maxStepYawDeg, 0.01, 180},
         {"translation_tolerance", &mt.translationTolerance, 0, 10},

@@ -146,6 +146,27 @@ TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
   EXPECT_TRUE(std::isnan(priorAltitude(ground, 0.0, 0.0, 0.32)));  // far outside the map
 }
 
+TEST(PosePrior, ADegenerateMatchTakesItsAlongTrackPlaceAndAltitudeFromTheOdometry) {
+  const ArgoverseLog log(test::sharedLog());
+  const GroundHeight ground = readGroundHeight(log.mapFiles().groundHeight, log.mapFiles().sim2);
+  const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[0]);
+  const Eigen::Vector3d t = planarPose(truth);
+  const Eigen::Vector2d along(std::cos(t.z()), std::sin(t.z())), across(-along.y(), along.x());
+  MatchResult match;  // a corridor: lateral and yaw observed, 3 m wrong along the road, 0.2 m across
+  match.estimate = t + Eigen::Vector3d(3.0 * along.x() + 0.2 * across.x(), 3.0 * along.y() + 0.2 * across.y(), 0.01);
+  match.information.setZero();
+  match.information.topLeftCorner<2, 2>() = 400.0 * across * across.transpose();
+  match.information(2, 2) = 3000.0;
+  const PosePrior prior = makePosePrior(match, truth, ground);
+  const Eigen::Vector2d expected = t.head<2>() + 0.2 * across;
+  EXPECT_NEAR((prior.pose.translation().head<2>() - expected).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(yawOf(prior.pose), t.z() + 0.01, 1e-9);
+  EXPECT_NEAR(prior.pose.translation().z(), priorAltitude(ground, expected.x(), expected.y(), 0.32), 1e-9);
+  // The road climbs here, so the estimate's own place would have put the altitude elsewhere.
+  const Eigen::Vector3d e = match.estimate;
+  EXPECT_GT(std::abs(priorAltitude(ground, e.x(), e.y(), 0.32) - prior.pose.translation().z()), 0.05);
+}
+
 // A winding, hilly ground-truth trajectory of keyframes 2 m apart.
 std::vector<SE3> truthTrajectory(int n) {
   std::vector<SE3> poses;
