@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <numbers>
 #include <string>
@@ -13,7 +14,7 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0)) {
+  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0)) {
     throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap or seed settings out of range");
   }
 }
@@ -21,8 +22,9 @@ void validate(const RoadPointOptions& o) {
 // The ground points of one ring in azimuth order, and the walk over them.
 class RingWalk {
  public:
-  RingWalk(std::span<const Eigen::Vector3d> points, std::vector<uint32_t> members, const RoadPointOptions& o)
-      : points_(points), members_(std::move(members)), o_(o) {
+  RingWalk(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> seeds, std::vector<uint32_t> members,
+           const RoadPointOptions& o)
+      : points_(points), seeds_(seeds), members_(std::move(members)), o_(o) {
     azimuth_.reserve(members_.size());
     for (uint32_t i : members_) azimuth_.push_back(std::atan2(points_[i].y(), points_[i].x()));
     std::vector<size_t> order(members_.size());
@@ -45,7 +47,7 @@ class RingWalk {
     const size_t n = members_.size();
     if (n == 0) return;
     for (size_t k = 0; k < n; ++k) {
-      if (visited_[k] || !isSeed(members_[k])) continue;
+      if (visited_[k] || !seeds_[members_[k]]) continue;
       visited_[k] = 1;
       road[members_[k]] = 1;
       walkFrom(k, +1, road);
@@ -54,12 +56,6 @@ class RingWalk {
   }
 
  private:
-  bool isSeed(uint32_t i) const {
-    const Eigen::Vector3d& p = points_[i];
-    return std::abs(p.y()) < o_.seedHalfWidth &&
-           std::abs(p.z() - o_.groundZ) < o_.seedTolerance + o_.seedTolerancePerMetre * p.head<2>().norm();
-  }
-
   // Steps along the ring while each ground point's height agrees with every road point of
   // this walk within `window` metres behind it (so a curb climbed through its face points,
   // in steps each below maxStep, still ends the walk); up to maxSkipped consecutive points
@@ -100,11 +96,86 @@ class RingWalk {
   }
 
   std::span<const Eigen::Vector3d> points_;
+  std::span<const uint8_t> seeds_;
   std::vector<uint32_t> members_;
   std::vector<double> azimuth_;
   std::vector<uint8_t> visited_;
   const RoadPointOptions& o_;
 };
+
+// The lane's height profile: a line z = a + b |x| through the vehicle's own ground (0, groundZ)
+// and the lane's points within `length` metres before the next one, so a climbing road is followed.
+class LaneProfile {
+ public:
+  LaneProfile(double groundZ, double length) : groundZ_(groundZ), length_(length) {}
+
+  void add(double ax, double z) { seeds_.push_back({ax, z}); }
+
+  double predict(double ax) {
+    while (!seeds_.empty() && seeds_.front().x() < ax - length_) seeds_.pop_front();
+    double n = 1, sx = 0, sz = groundZ_, sxx = 0, sxz = 0;  // the anchor (0, groundZ)
+    for (const Eigen::Vector2d& s : seeds_) n += 1, sx += s.x(), sz += s.y(), sxx += s.x() * s.x(), sxz += s.x() * s.y();
+    const double det = n * sxx - sx * sx;
+    const double b = det > 1e-9 ? (n * sxz - sx * sz) / det : 0.0;
+    return (sz - b * sx) / n + b * ax;
+  }
+
+ private:
+  double groundZ_, length_;
+  std::deque<Eigen::Vector2d> seeds_;  // (|x|, z)
+};
+
+// The seeds: ground points in the vehicle's lane (within seedHalfWidth of its x axis) at road
+// level (groundZ, within the seed tolerance). With laneSeeds, only as far as the lane goes: its
+// points are walked outwards ahead and behind in order of |x| along the lane's height profile, and
+// the lane ends at the first rise of more than laneStep above it that persists (a kerb across the
+// road at a T-junction), so the rings are not walked from a sidewalk beyond it; points below the
+// profile (gutters, crowns) are only skipped.
+std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ground,
+                               const RoadPointOptions& o) {
+  std::vector<uint8_t> seeds(points.size(), 0);
+  for (double side : {1.0, -1.0}) {
+    std::vector<uint32_t> lane;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector3d& p = points[i];
+      if (ground[i] && p.allFinite() && side * p.x() > 0.0 && std::abs(p.y()) < o.seedHalfWidth &&
+          p.head<2>().norm() < o.maxRange) {
+        lane.push_back(uint32_t(i));
+      }
+    }
+    std::sort(lane.begin(), lane.end(), [&](uint32_t a, uint32_t b) {
+      const double da = std::abs(points[a].x()), db = std::abs(points[b].x());
+      return da != db ? da < db : a < b;
+    });
+    LaneProfile profile(o.groundZ, o.gradeLength);
+    double lastX = 0.0;
+    bool started = false;
+    int failures = 0;
+    for (uint32_t i : lane) {
+      const Eigen::Vector3d& p = points[i];
+      const double ax = std::abs(p.x());
+      const bool level = std::abs(p.z() - o.groundZ) < o.seedTolerance + o.seedTolerancePerMetre * p.head<2>().norm();
+      if (!o.laneSeeds) {
+        seeds[i] = level;
+        continue;
+      }
+      const double pred = started ? profile.predict(ax) : 0.0;
+      const double tolerance = o.laneStep + o.stepPerMetre * (ax - lastX);
+      if (started && p.z() < pred - tolerance) continue;  // a gutter or a crown, not a kerb up
+      const bool agrees = started ? p.z() - pred <= tolerance : level;
+      if (!agrees) {
+        if (started && ++failures > o.maxSkipped) break;
+        continue;
+      }
+      started = true;
+      failures = 0;
+      lastX = ax;
+      profile.add(ax, p.z());
+      seeds[i] = level;
+    }
+  }
+  return seeds;
+}
 
 }  // namespace
 
@@ -122,9 +193,10 @@ std::vector<uint8_t> extractRoadPoints(std::span<const Eigen::Vector3d> points, 
       rings[ring[i]].push_back(uint32_t(i));
     }
   }
+  const std::vector<uint8_t> seeds = laneSeeds(points, ground, options);
   std::vector<uint8_t> road(points.size(), 0);
   for (std::vector<uint32_t>& members : rings) {
-    if (!members.empty()) RingWalk(points, std::move(members), options).walk(road);
+    if (!members.empty()) RingWalk(points, seeds, std::move(members), options).walk(road);
   }
   return road;
 }

@@ -9,10 +9,10 @@ namespace hdprior {
 
 // Road-point extraction: of the ground points, the road surface the vehicle drives on,
 // separated from sidewalks and verges at the curbs. Each laser ring is walked along its
-// azimuth, over ground points only, from seeds ahead of and behind the vehicle in its lane
-// at road level, outwards in both directions; the walk stops where the height differs by more
-// than a step from any road point of the walk just before it (a curb: about 0.15 m) or the gap along
-// the ring grows too long. Non-ground returns (cars, pedestrians) are stepped over, so the
+// azimuth, over ground points only, from seeds ahead of and behind the vehicle in its lane at
+// road level (laneSeeds: as far as the lane goes), outwards in both directions; the walk stops
+// where the height differs by more than a step from any road point of the walk just before it (a
+// curb: about 0.15 m) or the gap along the ring grows too long. Non-ground returns (cars, pedestrians) are stepped over, so the
 // walk continues on the road behind an occluder but not onto a raised sidewalk.
 struct RoadPointOptions {
   double groundZ = -0.32;          // road level under the ego origin
@@ -25,6 +25,11 @@ struct RoadPointOptions {
   double seedHalfWidth = 1.5;      // seeds: ground points within this of the vehicle's x axis ...
   double seedTolerance = 0.12;     // ... within this of groundZ ...
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
+  // Seeds only as far along the lane as its height profile goes on without a kerb up (off: every
+  // seed at road level, also beyond a T-junction's far kerb; measured in the README, Matching).
+  bool laneSeeds = false;
+  double laneStep = 0.08;          // a rise this far above the lane's height profile ends the lane (kerbs: 0.10-0.20 m)
+  double gradeLength = 10.0;       // metres of lane behind a point that give the road's grade there
 };
 
 inline constexpr uint8_t kRoadPoint = 1;

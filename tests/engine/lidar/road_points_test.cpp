@@ -85,6 +85,28 @@ TEST(RoadPoints, LowCurbIsStillACurb) {
   EXPECT_LT(flaggedShare(l, road, 3.0, 40.0).at(Surface::Sidewalk), 0.02);
 }
 
+TEST(RoadPoints, LaneSeedsEndAtTheKerbAcrossTheRoad) {
+  // Driving towards a T-junction's far side 18 m ahead: beyond its kerb the x axis runs on raised
+  // ground within the seed tolerance (0.12 m + 0.01 m per metre), so seeds there walk whole rings
+  // on the sidewalk; lane seeds end at the kerb.
+  test::Street street;
+  street.endAt = 18.0;
+  street.car = false;
+  const Labelled l = scan(street);
+  const std::vector<uint8_t> ground = segmentGround(l.points);
+  RoadPointOptions lane;
+  lane.laneSeeds = true;
+  const auto everySeed = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground), 3.0, 40.0);
+  const auto laneOnly = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground, lane), 3.0, 40.0);
+  EXPECT_GT(everySeed.at(Surface::Sidewalk), 0.05);
+  EXPECT_LT(laneOnly.at(Surface::Sidewalk), 0.01);
+  EXPECT_GT(laneOnly.at(Surface::Road), 0.95);
+  // On the straight street they are the same road.
+  const Labelled straight = scan({});
+  const std::vector<uint8_t> g = segmentGround(straight.points);
+  EXPECT_EQ(extractRoadPoints(straight.points, straight.rings, g, lane), extractRoadPoints(straight.points, straight.rings, g));
+}
+
 TEST(RoadPoints, PlanarPointsThinDeterministically) {
   const std::vector<Eigen::Vector3d> points = {{0.1, 0.1, 0}, {0.3, 0.3, 0}, {1.2, 0.1, 0}, {5, 5, 0}};
   const std::vector<uint8_t> flags = {1, 1, 1, 0};

@@ -23,6 +23,9 @@ struct ScanPoint {
 struct Street {
   double roadZ = -0.32, curb = 0.15, halfWidth = 5.0, sidewalk = 3.0, sensorZ = 1.6;
   bool car = true;  // a 4.5 x 1.8 x 1.5 m box 8 m ahead in the right lane
+  // A kerb across the road this far ahead with raised ground (sidewalk) beyond: the far side of a
+  // T-junction the vehicle drives towards.
+  double endAt = std::numeric_limits<double>::infinity();
 };
 
 inline std::vector<ScanPoint> scanStreet(const Street& s, unsigned seed = 1) {
@@ -45,9 +48,16 @@ inline std::vector<ScanPoint> scanStreet(const Street& s, unsigned seed = 1) {
         }
       };
       if (d.z() < 0) {
-        consider((s.roadZ - s.sensorZ) / d.z(), Surface::Road, [&](const Eigen::Vector3d& p) { return std::abs(p.y()) <= s.halfWidth; });
-        consider((s.roadZ + s.curb - s.sensorZ) / d.z(), Surface::Sidewalk,
-                 [&](const Eigen::Vector3d& p) { return std::abs(p.y()) > s.halfWidth && std::abs(p.y()) < s.halfWidth + s.sidewalk; });
+        consider((s.roadZ - s.sensorZ) / d.z(), Surface::Road,
+                 [&](const Eigen::Vector3d& p) { return std::abs(p.y()) <= s.halfWidth && p.x() <= s.endAt; });
+        consider((s.roadZ + s.curb - s.sensorZ) / d.z(), Surface::Sidewalk, [&](const Eigen::Vector3d& p) {
+          return std::abs(p.y()) < s.halfWidth + s.sidewalk && (std::abs(p.y()) > s.halfWidth || p.x() > s.endAt);
+        });
+      }
+      if (std::isfinite(s.endAt) && d.x() > 1e-9) {
+        consider(s.endAt / d.x(), Surface::Curb, [&](const Eigen::Vector3d& p) {
+          return std::abs(p.y()) <= s.halfWidth && p.z() >= s.roadZ && p.z() <= s.roadZ + s.curb;
+        });
       }
       for (double side : {-1.0, 1.0}) {
         if (std::abs(d.y()) < 1e-9) continue;
