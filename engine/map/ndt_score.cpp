@@ -214,89 +214,83 @@ void addTerms(const TermBlock& t, const NdtGaussConstants& k, Accumulator& acc) 
   acc.matched += t.size;
 }
 
-// The containing cell or the four nearest (the Bilinear weighting stays in accumulate below).
+// A point placed on the grid by the pose: (a, b) = R(yaw) p, (tx, ty) its map position.
+struct PlacedPoint {
+  double a, b, tx, ty;
+};
+
+// Calls visit(point, cell index, col offset, row offset, fu, fv) for each valid cell a point is scored
+// against: the one holding it, or the 2 x 2 whose centres surround it (offsets 0 or 1 from the
+// lower-left one; fu, fv the point's place between their centres).
+template <typename Visit>
+HDPRIOR_INLINE void forEachCell(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& pose,
+                                NdtLookup lookup, Visit&& visit) {
+  const GridGeometry& g = grid.geometry();
+  const int32_t* index = grid.cellIndex().data();
+  const double c = std::cos(pose.z()), s = std::sin(pose.z());
+  const double inv = 1.0 / g.resolution, ox = g.origin.x(), oy = g.origin.y();
+  const int span = lookup == NdtLookup::ContainingCell ? 0 : 1;
+  const double shift = 0.5 * span;
+  for (const Eigen::Vector2d& p : points) {
+    PlacedPoint q{c * p.x() - s * p.y(), s * p.x() + c * p.y(), 0.0, 0.0};
+    q.tx = q.a + pose.x(), q.ty = q.b + pose.y();
+    const double u = (q.tx - ox) * inv - shift, v = (q.ty - oy) * inv - shift;
+    if (!(u > -1.0 && v > -1.0 && u < g.cols && v < g.rows)) continue;
+    const int col = int(std::floor(u)), row = int(std::floor(v));
+    for (int dr = 0; dr <= span; ++dr) {
+      for (int dc = 0; dc <= span; ++dc) {
+        if (!g.inside(col + dc, row + dr)) continue;
+        const int32_t i = index[size_t(row + dr) * size_t(g.cols) + size_t(col + dc)];
+        if (i >= 0) visit(q, i, dc, dr, u - col, v - row);
+      }
+    }
+  }
+}
+
+// The containing cell or the four nearest: terms gathered in blocks and summed in lanes.
 template <NdtDerivatives D>
 Accumulator accumulateUnweighted(const NdtGrid& grid, std::span<const Eigen::Vector2d> points,
                                  const Eigen::Vector3d& pose, const NdtGaussConstants& k, NdtLookup lookup) {
-  const GridGeometry& g = grid.geometry();
-  const int32_t* index = grid.cellIndex().data();
   const NdtCell* cells = grid.cells().data();
-  const double c = std::cos(pose.z()), s = std::sin(pose.z());
-  const double inv = 1.0 / g.resolution, ox = g.origin.x(), oy = g.origin.y();
-  const bool four = lookup == NdtLookup::FourNearest;
-  const double shift = four ? 0.5 : 0.0;
   Accumulator acc;
   auto block = std::make_unique<TermBlock>();
   TermBlock& t = *block;
-  const auto push = [&](int32_t i, double tx, double ty, double a, double b) {
+  forEachCell(grid, points, pose, lookup, [&](const PlacedPoint& q, int32_t i, int, int, double, double) {
     const NdtCell& cell = cells[i];
-    t.qx[t.size] = tx - cell.mean.x(), t.qy[t.size] = ty - cell.mean.y();
+    t.qx[t.size] = q.tx - cell.mean.x(), t.qy[t.size] = q.ty - cell.mean.y();
     t.i00[t.size] = cell.information(0, 0), t.i01[t.size] = cell.information(0, 1), t.i11[t.size] = cell.information(1, 1);
-    t.a[t.size] = a, t.b[t.size] = b;
+    t.a[t.size] = q.a, t.b[t.size] = q.b;
     if (++t.size == TermBlock::kCapacity) {
       addTerms<D>(t, k, acc);
       t.size = 0;
     }
-  };
-  for (const Eigen::Vector2d& p : points) {
-    const double a = c * p.x() - s * p.y(), b = s * p.x() + c * p.y();
-    const double tx = a + pose.x(), ty = b + pose.y();
-    const double u = (tx - ox) * inv - shift, v = (ty - oy) * inv - shift;
-    if (!(u > -1.0 && v > -1.0 && u < g.cols && v < g.rows)) continue;
-    const int col = int(std::floor(u)), row = int(std::floor(v));
-    for (int r = row; r <= row + int(four); ++r) {
-      for (int cc = col; cc <= col + int(four); ++cc) {
-        if (!g.inside(cc, r)) continue;
-        const int32_t i = index[size_t(r) * size_t(g.cols) + size_t(cc)];
-        if (i >= 0) push(i, tx, ty, a, b);
-      }
-    }
-  }
+  });
   if (t.size > 0) addTerms<D>(t, k, acc);
+  return acc;
+}
+
+// The 2 x 2 cells weighted bilinearly (one term at a time: the weights' derivatives join in).
+template <NdtDerivatives D>
+Accumulator accumulateBilinear(const NdtGrid& grid, std::span<const Eigen::Vector2d> points,
+                               const Eigen::Vector3d& pose, const NdtGaussConstants& k) {
+  const NdtCell* cells = grid.cells().data();
+  const double inv = 1.0 / grid.cellSize();
+  Accumulator acc;
+  forEachCell(grid, points, pose, NdtLookup::Bilinear,
+              [&](const PlacedPoint& q, int32_t i, int dc, int dr, double fu, double fv) {
+                const Term t = cellTerm<D>(cells[i], q.tx, q.ty, q.a, q.b, k);
+                const double wx = dc == 0 ? 1.0 - fu : fu, wy = dr == 0 ? 1.0 - fv : fv;
+                const double dwx = dc == 0 ? -inv : inv, dwy = dr == 0 ? -inv : inv;
+                add(acc, weighted(t, bilinearWeight(wx, wy, dwx, dwy, q.a, q.b)));
+              });
   return acc;
 }
 
 template <NdtDerivatives D>
 Accumulator accumulate(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& pose,
                        const NdtGaussConstants& k, NdtLookup lookup) {
-  if (lookup != NdtLookup::Bilinear) return accumulateUnweighted<D>(grid, points, pose, k, lookup);
-  const GridGeometry& g = grid.geometry();
-  const int32_t* index = grid.cellIndex().data();
-  const NdtCell* cells = grid.cells().data();
-  const double c = std::cos(pose.z()), s = std::sin(pose.z());
-  const double inv = 1.0 / g.resolution, ox = g.origin.x(), oy = g.origin.y();
-  const double shift = lookup == NdtLookup::ContainingCell ? 0.0 : 0.5;
-  Accumulator acc;
-  for (const Eigen::Vector2d& p : points) {
-    const double a = c * p.x() - s * p.y(), b = s * p.x() + c * p.y();
-    const double tx = a + pose.x(), ty = b + pose.y();
-    const double u = (tx - ox) * inv - shift, v = (ty - oy) * inv - shift;
-    if (!(u > -1.0 && v > -1.0 && u < g.cols && v < g.rows)) continue;
-    const int col = int(std::floor(u)), row = int(std::floor(v));
-    if (lookup == NdtLookup::ContainingCell) {
-      if (col < 0 || row < 0) continue;
-      const int32_t i = index[size_t(row) * size_t(g.cols) + size_t(col)];
-      if (i >= 0) add(acc, cellTerm<D>(cells[i], tx, ty, a, b, k));
-      continue;
-    }
-    const double fu = u - col, fv = v - row;
-    for (int r = row; r <= row + 1; ++r) {
-      for (int cc = col; cc <= col + 1; ++cc) {
-        if (!g.inside(cc, r)) continue;
-        const int32_t i = index[size_t(r) * size_t(g.cols) + size_t(cc)];
-        if (i < 0) continue;
-        const Term t = cellTerm<D>(cells[i], tx, ty, a, b, k);
-        if (lookup == NdtLookup::FourNearest) {
-          add(acc, t);
-          continue;
-        }
-        const double wx = cc == col ? 1.0 - fu : fu, wy = r == row ? 1.0 - fv : fv;
-        const double dwx = (cc == col ? -inv : inv), dwy = (r == row ? -inv : inv);
-        add(acc, weighted(t, bilinearWeight(wx, wy, dwx, dwy, a, b)));
-      }
-    }
-  }
-  return acc;
+  return lookup == NdtLookup::Bilinear ? accumulateBilinear<D>(grid, points, pose, k)
+                                       : accumulateUnweighted<D>(grid, points, pose, k, lookup);
 }
 
 }  // namespace
