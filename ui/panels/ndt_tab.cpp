@@ -137,11 +137,9 @@ void drawResult(AppState& state) {
   ImGui::Text("%zu points, %d iterations, %.1f ms", r.points, r.iterations, r.timeMs);
   ImGui::TextDisabled("(yaw in degrees) road points + match %.0f ms", state.bench().matchMs);
   if (state.bench().landscapePending()) {
-    ImGui::SameLine();
-    ImGui::TextDisabled(", landscape ...");
+    ImGui::TextDisabled("landscape ...");
   } else if (state.bench().analysis().landscape) {
-    ImGui::SameLine();
-    ImGui::TextDisabled(", landscape %.0f ms", state.bench().landscapeMs);
+    ImGui::TextDisabled("landscape %.0f ms", state.bench().landscapeMs);
   }
   if (inspection->truth) {
     const Eigen::Vector3d e = planarError(*inspection->truth, r.estimate);
