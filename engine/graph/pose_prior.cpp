@@ -34,6 +34,12 @@ Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const Pos
   return observed * covariance.completeOrthogonalDecomposition().pseudoInverse() * observed;
 }
 
+Eigen::Matrix3d withVarianceAlong(const Eigen::Matrix3d& information, const Eigen::Vector3d& a, double sigma) {
+  const Eigen::Vector3d Ia = information * a;
+  const double denominator = 1.0 + sigma * sigma * a.dot(Ia);
+  return information - sigma * sigma * Ia * Ia.transpose() / denominator;
+}
+
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
                         const PosePriorOptions& options) {
   // Where the match observes nothing (along a corridor) its estimate is arbitrary: the prior's
@@ -48,9 +54,9 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   prior.pose.translation() = Eigen::Vector3d(e.x(), e.y(), std::isfinite(z) ? z : odometryPose.translation().z());
   // Match information is over (x, y, yaw); reorder to (yaw, x, y) and add z.
   const int order[3] = {1, 2, 0};  // match index -> prior index
-  Eigen::Matrix3d information = flooredInformation(match.information, options);
+  const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
+  Eigen::Matrix3d information = withVarianceAlong(flooredInformation(match.information, options), along, options.alongTrackSigma);
   if (!options.alongTrack) {
-    const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
     const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - along * along.transpose();
     information = P * information * P;
   }

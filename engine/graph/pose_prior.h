@@ -23,6 +23,9 @@ struct PosePriorOptions {
   // match counts every road point as an independent observation and misses its biases.
   double minSigmaXY = 0.0;       // metres
   double minSigmaYawDeg = 0.0;
+  // Added to the match's variance along the vehicle's heading: junction matches, the only ones that
+  // observe it, are 0.1-3 m off along the road while their Laplace sigma says 5-7 cm (README).
+  double alongTrackSigma = 1.0;  // metres; 0 adds nothing
   // false: the prior constrains only the lateral position and yaw (and z), never the position along
   // the vehicle's heading, where NDT matches against a road's drivable area are weakest.
   bool alongTrack = true;
@@ -38,6 +41,10 @@ Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information);
 // The match's information over (x, y, yaw) with the options' floors added to its covariance in the
 // directions the match observes; unobservable directions keep zero information.
 Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options);
+
+// The information of a Gaussian whose covariance gains sigma^2 along the unit direction a
+// (Woodbury; exact for a singular information too, e.g. a degenerate match's).
+Eigen::Matrix3d withVarianceAlong(const Eigen::Matrix3d& information, const Eigen::Vector3d& a, double sigma);
 
 // Builds the prior from a match (its estimate and information over x, y, yaw) and the
 // odometry pose that supplies roll and pitch, and the place in the directions the match does not

@@ -1,6 +1,7 @@
 #include "engine/io/log_discovery.h"
 
 #include <algorithm>
+#include <set>
 
 #include "engine/error.h"
 
@@ -17,10 +18,13 @@ std::vector<fs::path> findArgoverseLogs(const fs::path& dir) {
   if (!fs::is_directory(dir, ec)) throw Error(dir.string(), fs::exists(dir, ec) ? "is not a folder" : "folder not found");
   if (looksLikeArgoverseLog(dir)) return {dir};
   std::vector<fs::path> logs;
-  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+  std::set<fs::path> visited{fs::canonical(dir, ec)};  // symlinked folders are followed, each once (no cycles)
+  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied | fs::directory_options::follow_directory_symlink, ec);
   for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (!it->is_directory(ec)) continue;
-    if (it->path().filename().string().starts_with(".")) {
+    std::error_code canonicalError;
+    if (!visited.insert(fs::canonical(it->path(), canonicalError)).second || canonicalError ||
+        it->path().filename().string().starts_with(".")) {
       it.disable_recursion_pending();
     } else if (looksLikeArgoverseLog(it->path())) {
       logs.push_back(it->path());

@@ -14,7 +14,7 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0)) {
+  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
     throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap or seed settings out of range");
   }
 }
@@ -103,8 +103,9 @@ class RingWalk {
   const RoadPointOptions& o_;
 };
 
-// The lane's height profile: a line z = a + b |x| through the vehicle's own ground (0, groundZ)
-// and the lane's points within `length` metres before the next one, so a climbing road is followed.
+// The lane's height profile: a line z = a + b |x| through the lane's points within `length` metres
+// before the next one (and the vehicle's own ground (0, groundZ) while they are too few or too
+// bunched to give a grade), so a climbing road is followed.
 class LaneProfile {
  public:
   LaneProfile(double groundZ, double length) : groundZ_(groundZ), length_(length) {}
@@ -113,8 +114,11 @@ class LaneProfile {
 
   double predict(double ax) {
     while (!seeds_.empty() && seeds_.front().x() < ax - length_) seeds_.pop_front();
-    double n = 1, sx = 0, sz = groundZ_, sxx = 0, sxz = 0;  // the anchor (0, groundZ)
+    // Anchoring far-out windows at the vehicle too would bend the profile of a road whose grade
+    // changes (a sag) below the road, and end the lane there (the real sweeps, 33 m behind).
+    double n = 0, sx = 0, sz = 0, sxx = 0, sxz = 0;
     for (const Eigen::Vector2d& s : seeds_) n += 1, sx += s.x(), sz += s.y(), sxx += s.x() * s.x(), sxz += s.x() * s.y();
+    if (n < 2 || sxx / n - (sx / n) * (sx / n) < 1.0) n += 1, sz += groundZ_;  // points spread over < 2 m: no grade of their own
     const double det = n * sxx - sx * sx;
     const double b = det > 1e-9 ? (n * sxz - sx * sz) / det : 0.0;
     return (sz - b * sx) / n + b * ax;
@@ -128,7 +132,7 @@ class LaneProfile {
 // The seeds: ground points in the vehicle's lane (within seedHalfWidth of its x axis) at road
 // level (groundZ, within the seed tolerance). With laneSeeds, only as far as the lane goes: its
 // points are walked outwards ahead and behind in order of |x| along the lane's height profile, and
-// the lane ends at the first rise of more than laneStep above it that persists (a kerb across the
+// the lane ends at the first rise of more than laneStep above it that persists for laneEndLength (a kerb across the
 // road at a T-junction), so the rings are not walked from a sidewalk beyond it; points below the
 // profile (gutters, crowns) are only skipped.
 std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ground,
@@ -148,9 +152,8 @@ std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::spa
       return da != db ? da < db : a < b;
     });
     LaneProfile profile(o.groundZ, o.gradeLength);
-    double lastX = 0.0;
+    double lastX = 0.0, riseFrom = -1.0;  // riseFrom: where the current run of points above the lane began
     bool started = false;
-    int failures = 0;
     for (uint32_t i : lane) {
       const Eigen::Vector3d& p = points[i];
       const double ax = std::abs(p.x());
@@ -160,15 +163,21 @@ std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::spa
         continue;
       }
       const double pred = started ? profile.predict(ax) : 0.0;
-      const double tolerance = o.laneStep + o.stepPerMetre * (ax - lastX);
-      if (started && p.z() < pred - tolerance) continue;  // a gutter or a crown, not a kerb up
+      // Grown with the gap to the last lane point, but not along a run above the lane (a sidewalk).
+      const double tolerance = o.laneStep + o.stepPerMetre * ((riseFrom >= 0.0 ? riseFrom : ax) - lastX);
+      // Below: a gutter or a crown; far above: an object on the lane (ground segmentation let it
+      // through, e.g. 0.8 m up behind a real sweep). Neither is a kerb up.
+      if (started && (p.z() < pred - tolerance || p.z() > pred + o.laneObjectHeight)) continue;
       const bool agrees = started ? p.z() - pred <= tolerance : level;
       if (!agrees) {
-        if (started && ++failures > o.maxSkipped) break;
+        // A ring's points near the axis share one range: a bump under one ring (0.1 m, 33 m behind a
+        // real sweep) is not a kerb; a kerb's sidewalk stays up for metres.
+        if (started && riseFrom < 0.0) riseFrom = ax;
+        if (started && ax - riseFrom >= o.laneEndLength) break;
         continue;
       }
       started = true;
-      failures = 0;
+      riseFrom = -1.0;
       lastX = ax;
       profile.add(ax, p.z());
       seeds[i] = level;

@@ -27,9 +27,11 @@ struct RoadPointOptions {
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
   // Seeds only as far along the lane as its height profile goes on without a kerb up (off: every
   // seed at road level, also beyond a T-junction's far kerb; measured in the README, Matching).
-  bool laneSeeds = false;
+  bool laneSeeds = true;
   double laneStep = 0.08;          // a rise this far above the lane's height profile ends the lane (kerbs: 0.10-0.20 m)
   double gradeLength = 10.0;       // metres of lane behind a point that give the road's grade there
+  double laneObjectHeight = 0.35;  // a lane point higher than this above the profile is an object, not a kerb
+  double laneEndLength = 1.0;      // the lane ends where its points stay above the profile this far along it
 };
 
 inline constexpr uint8_t kRoadPoint = 1;

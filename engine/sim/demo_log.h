@@ -5,7 +5,7 @@
 namespace hdprior {
 
 // Bumped whenever the simulator's output changes, so stale cached demos are not reused.
-inline constexpr int kDemoLogVersion = 1;
+inline constexpr int kDemoLogVersion = 2;  // 2: routes smoothed through junctions
 
 // The folder the demo log is cached in: $HDPRIOR_CACHE_DIR, else $XDG_CACHE_HOME/hdprior,
 // else $HOME/.cache/hdprior, else <temp>/hdprior-cache.

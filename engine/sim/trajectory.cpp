@@ -39,6 +39,32 @@ std::vector<Station> routeStations(const LaneGraph& lanes, const std::vector<siz
   return out;
 }
 
+// Lane centerlines are polylines (a junction connector has a vertex every ~2 m): driven as they
+// are, the heading would jump by several degrees at each vertex. A car's path is smooth: each
+// station becomes the triangle-weighted mean of the stations within halfWindow along the route
+// (the window shrinks symmetrically at the ends, so they stay put).
+void smoothPath(std::vector<Station>& st, double halfWindow) {
+  std::vector<Vec2> xy(st.size());
+  const auto n = std::ptrdiff_t(st.size());
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const double w = std::min({halfWindow, st[i].s - st.front().s, st.back().s - st[i].s});
+    Vec2 sum = st[i].xy;
+    double weight = 1.0;
+    for (std::ptrdiff_t dir : {-1, 1}) {
+      for (std::ptrdiff_t k = i + dir; k >= 0 && k < n && std::abs(st[k].s - st[i].s) < w; k += dir) {
+        const double c = 1.0 - std::abs(st[k].s - st[i].s) / w;
+        sum += c * st[k].xy;
+        weight += c;
+      }
+    }
+    xy[i] = sum / weight;
+  }
+  for (size_t i = 0; i < st.size(); ++i) {
+    st[i].xy = xy[i];
+    if (i > 0) st[i].s = st[i - 1].s + (xy[i] - xy[i - 1]).norm();
+  }
+}
+
 double headingAt(const std::vector<Station>& st, size_t i, double reach) {
   size_t a = i, b = i;
   while (a > 0 && st[i].s - st[a].s < reach) --a;
@@ -68,6 +94,7 @@ PoseTrajectory routeTrajectory(const LaneGraph& lanes, const GroundHeight& groun
     // A real map's ground height ends a few metres beyond its drivable area: cut the route there.
     const auto off = std::find_if(st.begin(), st.end(), [&](const Station& x) { return std::isnan(ground.bilinearAt(x.xy)); });
     st.erase(off, st.end());
+    for (int pass = 0; pass < 2; ++pass) smoothPath(st, 2.0);
   }
   if (st.size() < 2 || st.back().s < needed)
     throw Error("lane graph", "no route of " + std::to_string(int(needed)) + " m along the lanes (within the ground height)");
@@ -124,7 +151,8 @@ PoseTrajectory routeTrajectory(const LaneGraph& lanes, const GroundHeight& groun
     while (j + 2 < st.size() && st[j + 1].s <= s) ++j;
     const double g = std::clamp((s - st[j].s) / std::max(1e-9, st[j + 1].s - st[j].s), 0.0, 1.0);
     const Vec2 xy = (1 - g) * st[j].xy + g * st[j + 1].xy;
-    const double yaw = headingAt(st, j, 1.5);
+    const double yaw0 = headingAt(st, j, 1.0);
+    const double yaw = yaw0 + g * std::remainder(headingAt(st, j + 1, 1.0) - yaw0, 2 * std::numbers::pi);
     const double z = ground.bilinearAt(xy);
     if (std::isnan(z)) throw Error(ground.source(), "no ground height under the route");
     RollPitch rp = ground.rollPitchAt(xy, yaw, 2.0);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/sim/demo_log.h"
 #include "render/image_compare.h"
 #include "test_data.h"
 
@@ -183,7 +184,7 @@ TEST(ViewCommand, WithoutALogOpensTheDemoLog) {
       runWithDisplay("view --frames 3 --exit --screenshot " + quoted(shot), dir, "HDPRIOR_CACHE_DIR=" + quoted(dir / "cache"));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("generating the demo log"), std::string::npos) << r.err;
-  EXPECT_TRUE(fs::is_directory(dir / "cache" / "demo-v1"));
+  EXPECT_TRUE(fs::is_directory(dir / "cache" / ("demo-v" + std::to_string(kDemoLogVersion))));
   const Content c = measure(readPng(shot));
   EXPECT_GT(c.drivableGrey, 0.01);  // the demo's dense points cover most of the road
   EXPECT_GT(c.lidarColors, 0.01);

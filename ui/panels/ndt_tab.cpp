@@ -41,7 +41,7 @@ bool drawCellSizes(AppState& state) {
     const auto it = std::find(m.cellSizes.begin(), m.cellSizes.end(), size);
     bool on = it != m.cellSizes.end();
     ImGui::SameLine();
-    char label[16];
+    char label[32];  // %g of a double can take 13 characters
     std::snprintf(label, sizeof label, "%g##cell", size);
     if (ImGui::Checkbox(label, &on)) {
       if (on) m.cellSizes.push_back(size);
@@ -101,7 +101,10 @@ bool drawRoadPoints(AppState& state) {
   changed |= slider("step per metre", r.road.stepPerMetre, 0.0, 0.05, "%.3f");
   changed |= slider("max gap (m)", r.road.maxGap, 0.5, 20.0, "%.1f");
   changed |= ImGui::Checkbox("lane seeds (end at a kerb across the road)", &r.road.laneSeeds);
-  if (r.road.laneSeeds) changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
+  if (r.road.laneSeeds) {
+    changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
+    changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
+  }
   changed |= slider("ground plane dist (m)", r.ground.planeDistance, 0.02, 0.5, "%.2f");
   changed |= slider("ground max tilt (deg)", r.ground.maxTiltDeg, 2.0, 45.0, "%.0f");
   changed |= ImGui::Checkbox("key-frame sub-map (next run)", &state.bench().config.submapRoadPoints);

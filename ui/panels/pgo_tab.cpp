@@ -23,6 +23,7 @@ void drawWeights(AppState& state) {
   sliderD("min sigma xy (m)", p.minSigmaXY, 0.0, 1.0);
   sliderD("min sigma yaw (deg)", p.minSigmaYawDeg, 0.0, 5.0);
   sliderD("ego height (m)", p.egoHeight, 0.0, 1.0);
+  sliderD("along-track sigma (m)", p.alongTrackSigma, 0.0, 5.0);
   ImGui::Checkbox("constrain along-track", &p.alongTrack);
   ImGui::Text("robust loss and graph");
   sliderD("prior Huber (sigma)", g.priorHuber, 0.1, 10.0);

@@ -132,7 +132,7 @@ TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
   match.estimate = planarPose(truth);
   match.information = Eigen::Vector3d(100, 200, 3000).asDiagonal();
   const SE3 odometry = truth * poseOf(0.5, -0.3, 0.4, 0.02);  // wrong by a little, incl. z
-  const PosePrior prior = makePosePrior(match, odometry, ground);
+  const PosePrior prior = makePosePrior(match, odometry, ground, {.alongTrackSigma = 0.0});
   EXPECT_NEAR(prior.pose.translation().z(), truth.translation().z(), 0.10);  // ego 0.32 m above the raster
   EXPECT_NEAR(prior.pose.translation().x(), truth.translation().x(), 1e-9);
   EXPECT_NEAR(yawOf(prior.pose), yawOf(truth), 1e-9);
@@ -144,6 +144,32 @@ TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
   EXPECT_DOUBLE_EQ(prior.information(2, 2), 200);
   EXPECT_DOUBLE_EQ(prior.information(3, 3), 100);  // 0.1 m altitude sigma
   EXPECT_TRUE(std::isnan(priorAltitude(ground, 0.0, 0.0, 0.32)));  // far outside the map
+}
+
+TEST(PosePrior, TheAlongTrackSigmaWidensOnlyTheDirectionOfTheHeading) {
+  const double yaw = 0.6;
+  const Eigen::Vector3d along(std::cos(yaw), std::sin(yaw), 0.0);
+  Eigen::Matrix3d covariance;  // a full, correlated match covariance over (x, y, yaw)
+  covariance << 0.004, 0.001, 0.0002, 0.001, 0.003, -0.0001, 0.0002, -0.0001, 0.00005;
+  const Eigen::Matrix3d widened = withVarianceAlong(covariance.inverse(), along, 1.5).inverse();
+  EXPECT_TRUE(widened.isApprox(covariance + 2.25 * along * along.transpose(), 1e-9));
+  // A corridor match (nothing observed along the road) stays as it is, singular and all.
+  const Eigen::Vector3d across(-along.y(), along.x(), 0.0);
+  const Eigen::Matrix3d corridor = 400.0 * across * across.transpose() + Eigen::Vector3d(0, 0, 3000).asDiagonal().toDenseMatrix();
+  EXPECT_TRUE(withVarianceAlong(corridor, along, 1.5).isApprox(corridor, 1e-12));
+  // In the prior (yaw, x, y, z order): the lateral and yaw information are kept where the match
+  // information is diagonal in the vehicle's axes; along the heading it drops to 1 / (sigma^2 + 1 / 100).
+  MatchResult match;
+  match.estimate = Eigen::Vector3d(0, 0, yaw);
+  match.information = 100.0 * along * along.transpose() + 400.0 * across * across.transpose();
+  match.information(2, 2) = 3000.0;
+  const GroundHeight none;
+  const PosePrior prior = makePosePrior(match, poseOf(0, 0, 0, yaw), none, {.alongTrackSigma = 1.5});
+  const Eigen::Vector3d alongYawXY(0, along.x(), along.y()), acrossYawXY(0, across.x(), across.y());
+  const Eigen::Matrix3d I = prior.information.topLeftCorner<3, 3>();
+  EXPECT_NEAR(alongYawXY.dot(I * alongYawXY), 1.0 / (2.25 + 0.01), 1e-9);
+  EXPECT_NEAR(acrossYawXY.dot(I * acrossYawXY), 400.0, 1e-9);
+  EXPECT_NEAR(I(0, 0), 3000.0, 1e-9);
 }
 
 TEST(PosePrior, ADegenerateMatchTakesItsAlongTrackPlaceAndAltitudeFromTheOdometry) {

@@ -38,4 +38,18 @@ TEST(LogDiscovery, FindsLogsAtAnyDepthSortedAndSkipsHiddenAndIncompleteFolders) 
   EXPECT_THROW(findArgoverseLogs(root / "file.txt"), Error);
 }
 
+TEST(LogDiscovery, FollowsSymlinkedFoldersOnceEvenInACycle) {
+  const fs::path root = test::freshOutputDir("log_discovery_links");
+  fakeLog(root / "elsewhere" / "log1");
+  fs::create_directories(root / "set");
+  fs::create_directory_symlink(root / "elsewhere" / "log1", root / "set" / "linked");
+  fs::create_directory_symlink(root / "set", root / "set" / "loop");  // would recurse forever
+  EXPECT_EQ(findArgoverseLogs(root / "set"), std::vector<fs::path>{root / "set" / "linked"});
+  fakeLog(root / "set" / "real");
+  const auto logs = findArgoverseLogs(root / "set");
+  ASSERT_EQ(logs.size(), 2u);
+  EXPECT_EQ(logs[0], root / "set" / "linked");
+  EXPECT_EQ(logs[1], root / "set" / "real");
+}
+
 }  // namespace hdprior

@@ -94,9 +94,10 @@ TEST(RoadPoints, LaneSeedsEndAtTheKerbAcrossTheRoad) {
   street.car = false;
   const Labelled l = scan(street);
   const std::vector<uint8_t> ground = segmentGround(l.points);
-  RoadPointOptions lane;
+  RoadPointOptions lane, everyLevel;
   lane.laneSeeds = true;
-  const auto everySeed = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground), 3.0, 40.0);
+  everyLevel.laneSeeds = false;
+  const auto everySeed = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground, everyLevel), 3.0, 40.0);
   const auto laneOnly = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground, lane), 3.0, 40.0);
   EXPECT_GT(everySeed.at(Surface::Sidewalk), 0.05);
   EXPECT_LT(laneOnly.at(Surface::Sidewalk), 0.01);
@@ -104,7 +105,7 @@ TEST(RoadPoints, LaneSeedsEndAtTheKerbAcrossTheRoad) {
   // On the straight street they are the same road.
   const Labelled straight = scan({});
   const std::vector<uint8_t> g = segmentGround(straight.points);
-  EXPECT_EQ(extractRoadPoints(straight.points, straight.rings, g, lane), extractRoadPoints(straight.points, straight.rings, g));
+  EXPECT_EQ(extractRoadPoints(straight.points, straight.rings, g, lane), extractRoadPoints(straight.points, straight.rings, g, everyLevel));
 }
 
 TEST(RoadPoints, PlanarPointsThinDeterministically) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
@@ -15,10 +16,21 @@
 namespace hdprior {
 namespace {
 
+// A procedural town's ground height and lane graph, as the simulator drives them.
+struct Town {
+  explicit Town(uint64_t seed)
+      : map(generateTown(TownOptions{}, seed)),
+        ground(GroundHeight::fromNpy(map.groundHeight, map.imgSim2City, "town")),
+        lanes(map.vectorMap, {}, "town") {}
+  TownMap map;
+  GroundHeight ground;
+  LaneGraph lanes;
+};
+
 TEST(RouteTrajectory, CruisesSlowsStopsAndStaysOnTheGround) {
-  const TownMap town = generateTown(TownOptions{}, 7);
-  const GroundHeight ground = GroundHeight::fromNpy(town.groundHeight, town.imgSim2City, "town");
-  const LaneGraph lanes(town.vectorMap, {}, "town");
+  const Town town(7);
+  const GroundHeight& ground = town.ground;
+  const LaneGraph& lanes = town.lanes;
   RouteOptions o;
   o.seconds = 60.0;
   o.stopProbability = 1.0;
@@ -50,16 +62,43 @@ TEST(RouteTrajectory, CruisesSlowsStopsAndStaysOnTheGround) {
   EXPECT_TRUE(again.poses().back().isApprox(T.poses().back(), 0.0));
 }
 
+// Lane centerlines are polylines; the car's heading must still turn smoothly through a junction
+// (it used to jump 6-7 degrees at each connector vertex, which no odometry's motion model expects).
+TEST(RouteTrajectory, TurnsSmoothlyWithTheHeadingAlongTheMotion) {
+  const Town town(4);
+  RouteOptions o;
+  o.seconds = 60.0;
+  const PoseTrajectory T = routeTrajectory(town.lanes, town.ground, o, 4);
+  const auto yawAt = [&](size_t i) { return std::atan2(T.poses()[i].linear()(1, 0), T.poses()[i].linear()(0, 0)); };
+  double turned = 0.0, maxRateChange = 0.0, maxSlip = 0.0, previousRate = 0.0;
+  for (size_t i = 20; i < T.size(); i += 20) {  // 10 Hz, a sweep's period
+    const double rate = std::remainder(yawAt(i) - yawAt(i - 20), 2 * std::numbers::pi);
+    turned += std::abs(rate);
+    if (i > 20) maxRateChange = std::max(maxRateChange, std::abs(rate - previousRate));
+    previousRate = rate;
+    const Eigen::Vector2d motion = (T.poses()[i].translation() - T.poses()[i - 20].translation()).head<2>();
+    if (motion.norm() > 0.1) {
+      const double heading = yawAt(i - 10);
+      const double slip = std::abs(std::remainder(std::atan2(motion.y(), motion.x()) - heading, 2 * std::numbers::pi));
+      maxSlip = std::max(maxSlip, slip);
+    }
+  }
+  const double deg = 180.0 / std::numbers::pi;
+  std::printf("[ info ] turned %.0f deg, heading rate change per sweep <= %.2f deg, slip <= %.2f deg\n", turned * deg,
+              maxRateChange * deg, maxSlip * deg);
+  EXPECT_GT(turned * deg, 80.0);          // this route turns at a junction
+  EXPECT_LT(maxRateChange * deg, 1.5);    // was 7 degrees with the polyline's kinks
+  EXPECT_LT(maxSlip * deg, 4.0);          // heading against the chord of a sweep's motion (2.9 where a connector meets its lane)
+}
+
 TEST(RouteTrajectory, RejectsBadOptions) {
-  const TownMap town = generateTown(TownOptions{}, 7);
-  const GroundHeight ground = GroundHeight::fromNpy(town.groundHeight, town.imgSim2City, "town");
-  const LaneGraph lanes(town.vectorMap, {}, "town");
+  const Town town(7);
   RouteOptions o;
   o.seconds = -1;
-  EXPECT_THROW(routeTrajectory(lanes, ground, o, 1), Error);
+  EXPECT_THROW(routeTrajectory(town.lanes, town.ground, o, 1), Error);
   o.seconds = 1;
   o.poseRateHz = 50;
-  EXPECT_THROW(routeTrajectory(lanes, ground, o, 1), Error);
+  EXPECT_THROW(routeTrajectory(town.lanes, town.ground, o, 1), Error);
 }
 
 TEST(CropTrajectory, KeepsTheRealPosesForTheAskedSpan) {
