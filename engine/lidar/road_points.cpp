@@ -110,23 +110,35 @@ class LaneProfile {
  public:
   LaneProfile(double groundZ, double length) : groundZ_(groundZ), length_(length) {}
 
-  void add(double ax, double z) { seeds_.push_back({ax, z}); }
+  void add(double ax, double z) {
+    window_.push_back({ax, z});
+    sums_ += Sums::of(ax, z);
+  }
 
   double predict(double ax) {
-    while (!seeds_.empty() && seeds_.front().x() < ax - length_) seeds_.pop_front();
+    while (!window_.empty() && window_.front().x() < ax - length_) {
+      sums_ -= Sums::of(window_.front().x(), window_.front().y());
+      window_.pop_front();
+    }
     // Anchoring far-out windows at the vehicle too would bend the profile of a road whose grade
     // changes (a sag) below the road, and end the lane there (the real sweeps, 33 m behind).
-    double n = 0, sx = 0, sz = 0, sxx = 0, sxz = 0;
-    for (const Eigen::Vector2d& s : seeds_) n += 1, sx += s.x(), sz += s.y(), sxx += s.x() * s.x(), sxz += s.x() * s.y();
-    if (n < 2 || sxx / n - (sx / n) * (sx / n) < 1.0) n += 1, sz += groundZ_;  // points spread over < 2 m: no grade of their own
-    const double det = n * sxx - sx * sx;
-    const double b = det > 1e-9 ? (n * sxz - sx * sz) / det : 0.0;
-    return (sz - b * sx) / n + b * ax;
+    Sums s = sums_;
+    if (s.n < 2 || s.xx / s.n - (s.x / s.n) * (s.x / s.n) < 1.0) s += Sums::of(0.0, groundZ_);  // spread < 2 m: no grade of its own
+    const double det = s.n * s.xx - s.x * s.x;
+    const double b = det > 1e-9 ? (s.n * s.xz - s.x * s.z) / det : 0.0;
+    return (s.z - b * s.x) / s.n + b * ax;
   }
 
  private:
+  struct Sums {  // running sums of the window's points for the least-squares line
+    double n = 0, x = 0, z = 0, xx = 0, xz = 0;
+    static Sums of(double x, double z) { return {1, x, z, x * x, x * z}; }
+    Sums& operator+=(const Sums& o) { n += o.n, x += o.x, z += o.z, xx += o.xx, xz += o.xz; return *this; }
+    Sums& operator-=(const Sums& o) { n -= o.n, x -= o.x, z -= o.z, xx -= o.xx, xz -= o.xz; return *this; }
+  };
   double groundZ_, length_;
-  std::deque<Eigen::Vector2d> seeds_;  // (|x|, z)
+  std::deque<Eigen::Vector2d> window_;  // (|x|, z)
+  Sums sums_;
 };
 
 // The seeds: ground points in the vehicle's lane (within seedHalfWidth of its x axis) at road

@@ -86,14 +86,17 @@ BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90);
 void BM_MatchPclNdt(benchmark::State& state) { runMatches(state, MatchBackend::PclNdt); }
 BENCHMARK(BM_MatchPclNdt)->Unit(benchmark::kMillisecond)->Iterations(18);
 
+// Argument: lane seeds on (1, the default) or off (0, every level seed).
 void BM_SweepRoadPoints(benchmark::State& state) {
   const Fixture& f = fixture();
   const auto sweep = f.log->sweep(0);
   const Eigen::Matrix3d level = levelRotation(f.log->cityTEgo().at(f.log->sweepTimestamps()[0]));
-  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level).size());
+  SweepRoadPointOptions options;
+  options.road.laneSeeds = state.range(0) != 0;
+  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level, options).size());
   state.counters["sweep_points"] = double(sweep->points.size());
 }
-BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(0);
 
 // The tuning bench's cost landscape: 61 x 61 (x, y) offsets every 0.1 m and 41 yaw offsets, the
 // first sweep's road points on the finest grid around the ground truth.
