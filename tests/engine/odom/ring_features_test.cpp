@@ -30,21 +30,29 @@ int countLabel(const std::vector<FeatureLabel>& labels, FeatureLabel l) {
   return int(std::count(labels.begin(), labels.end(), l));
 }
 
+// LOAM's feature sets: the edges are off by default (see FeatureOptions) but labelled here.
+FeatureOptions loam() {
+  FeatureOptions o;
+  o.sharpPerSector = 2;
+  o.lessSharpPerSector = 20;
+  return o;
+}
+
 }  // namespace
 
 TEST(RingFeatures, PlaneGivesFlatsAndNoEdges) {
   const auto ring = scanRing(-20, 20, wall);
-  const auto labels = labelRing(ring, FeatureOptions{});
+  const auto labels = labelRing(ring, loam());
   EXPECT_EQ(countLabel(labels, FeatureLabel::Sharp), 0);
   EXPECT_EQ(countLabel(labels, FeatureLabel::LessSharp), 0);
-  EXPECT_EQ(countLabel(labels, FeatureLabel::Flat), FeatureOptions{}.sectors * FeatureOptions{}.flatPerSector);
+  EXPECT_EQ(countLabel(labels, FeatureLabel::Flat), loam().sectors * loam().flatPerSector);
   // Every point with a full neighbourhood is at least less-flat.
   EXPECT_EQ(countLabel(labels, FeatureLabel::Flat) + countLabel(labels, FeatureLabel::LessFlat), int(ring.size()) - 10);
 }
 
 TEST(RingFeatures, CornerIsTheSharpestPoint) {
   const auto ring = scanRing(30, 60, corner);
-  FeatureOptions o;
+  FeatureOptions o = loam();
   o.sectors = 1;
   const auto labels = labelRing(ring, o);
   std::vector<int> sharp;
@@ -65,7 +73,7 @@ TEST(RingFeatures, OccludedSideOfADepthJumpIsRejected) {
   // occluded-edge artefacts and must not become features; the post's own edge points may.
   auto surface = [](double a) { return std::abs(a) < 2 * M_PI / 180 ? 5.0 : 20.0 / std::cos(a); };
   const auto ring = scanRing(-20, 20, surface);
-  FeatureOptions o;
+  FeatureOptions o = loam();
   o.sectors = 1;
   const auto labels = labelRing(ring, o);
   for (size_t i = 0; i + 1 < ring.size(); ++i) {
@@ -83,7 +91,7 @@ TEST(RingFeatures, GrazingBeamIsRejected) {
   // A wall nearly parallel to the beams: spacing between neighbours exceeds 2 % of the range.
   auto grazing = [](double a) { return 2.0 / std::sin(a); };  // the wall y = 2 seen at 3..6 degrees
   const auto ring = scanRing(3, 6, grazing);
-  const auto labels = labelRing(ring, FeatureOptions{});
+  const auto labels = labelRing(ring, loam());
   for (size_t i = 0; i < labels.size(); ++i) EXPECT_EQ(labels[i], FeatureLabel::None) << i;
 }
 
@@ -105,7 +113,7 @@ TEST(RingFeatures, ExtractFeaturesSplitsByLaserAndOrdersByOffset) {
       points.emplace_back(p.x, p.y, p.z);
     }
   }
-  const FeatureCloud cloud = extractFeatures(points, raw, FeatureOptions{});
+  const FeatureCloud cloud = extractFeatures(points, raw, loam());
   EXPECT_TRUE(cloud.sharp.empty());
   EXPECT_EQ(cloud.flat.size(), 2u * 6 * 4);
   EXPECT_EQ(cloud.lessFlat.size(), 2 * (ring.size() - 10));
