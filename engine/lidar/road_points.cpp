@@ -15,7 +15,7 @@ namespace {
 
 void validate(const RoadPointOptions& o) {
   if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
-    throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap or seed settings out of range");
+    throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap, seed or lane settings out of range (laneObjectHeight must be above laneStep)");
   }
 }
 

@@ -256,6 +256,9 @@ Config parseConfig(const std::string& text, const std::string& source) {
   if (c.odometry.features.minRange >= c.odometry.features.maxRange) {
     throw Error(source, "odometry.features.min_range must be below max_range");
   }
+  if (c.roadPoints.road.laneObjectHeight <= c.roadPoints.road.laneStep) {
+    throw Error(source, "road_points.road.lane_object_height must be above lane_step");
+  }
   const GroundSegmentationOptions& g = c.roadPoints.ground;
   if (g.zoneRadii.size() != g.zoneRings.size() || g.zoneRadii.size() != g.zoneSectors.size()) {
     throw Error(source, "road_points.ground.zone_radii, zone_rings and zone_sectors must have the same length");

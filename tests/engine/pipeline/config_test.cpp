@@ -70,6 +70,8 @@ TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
   EXPECT_EQ(errorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
   EXPECT_EQ(errorOf(R"({"road_points": {"ground": {"zone_rings": [1, 2]}}})"),
             "my.json: road_points.ground.zone_radii, zone_rings and zone_sectors must have the same length");
+  EXPECT_EQ(errorOf(R"({"road_points": {"road": {"lane_object_height": 0.05}}})"),
+            "my.json: road_points.road.lane_object_height must be above lane_step");
   EXPECT_EQ(errorOf(R"({"graph": {"unknown": 1}})"), "my.json: unknown key graph.unknown");
   EXPECT_NE(errorOf("{").find("invalid JSON"), std::string::npos);
 }
