@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "engine/error.h"
+#include "engine/eval/match_calibration.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
@@ -53,6 +54,14 @@ std::string matrix(const Eigen::Matrix3d& m) {
     s += b;
   }
   return s + "]";
+}
+
+// A number, or null where it is infinite (JSON has no infinity): an unobservable direction.
+std::string finiteOrNull(double v) {
+  if (!std::isfinite(v)) return "null";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4f", v);
+  return b;
 }
 
 }  // namespace
@@ -104,6 +113,12 @@ int runMatch(const std::vector<std::string>& args) {
               r.score, r.scorePerPoint, r.inlierRatio, r.gateChi2);
   std::printf("  \"iterations\": %d,\n  \"time_ms\": %.3f,\n  \"observable_directions\": %d,\n", r.iterations,
               r.timeMs, r.observableDirections);
+  const Eigen::Vector3d sigma = matchErrorSample(truth, r.estimate, r.information).sigma;
+  std::printf("  \"sigma\": {\"along\": %s, \"lateral\": %s, \"yaw_deg\": %s},\n", finiteOrNull(sigma.x()).c_str(),
+              finiteOrNull(sigma.y()).c_str(), finiteOrNull(sigma.z() / kDeg).c_str());
+  const Eigen::Vector3d& w = r.evidenceHalfWidths;
+  std::printf("  \"evidence_half_widths\": {\"along\": %s, \"lateral\": %s, \"yaw_deg\": %s},\n",
+              finiteOrNull(w.x()).c_str(), finiteOrNull(w.y()).c_str(), finiteOrNull(w.z() / kDeg).c_str());
   std::printf("  \"covariance_x_y_yaw\": %s,\n  \"information_x_y_yaw\": %s\n}\n", matrix(r.covariance).c_str(),
               matrix(r.information).c_str());
   return 0;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <numbers>
 
 #include "engine/eval/box_plot.h"
 
@@ -50,6 +51,36 @@ std::string averagingLine(const EvalSummary& s) {
          std::to_string(s.failed) + " failed) of that log's per-sweep statistic.";
 }
 
+void appendDirection(std::vector<std::string>& row, const DirectionCalibration& d, double unit) {
+  if (d.observed == 0) {
+    row.insert(row.end(), 3, "");
+    return;
+  }
+  row.push_back(number(d.rms * unit));
+  row.push_back(number(d.beyond3Sigma));
+  row.push_back(number(d.medianNees));
+}
+
+std::string calibrationMarkdown(const EvalSummary& s) {
+  const size_t ok = s.logs - s.failed;
+  std::string md = "\nPriors the graph used, pooled over the " + std::to_string(ok) + (ok == 1 ? " log" : " logs") + " (" +
+                   std::to_string(s.priors.matches) +
+                   " priors; error against the ground truth in the true vehicle frame; NEES = (error / reported sigma)^2, "
+                   "0.45 median and 0.27 % beyond 3 sigma for an honest Gaussian; a direction a prior reports "
+                   "unobservable is left out):\n\n| direction | observed | rms | beyond 3 sigma | median NEES |\n"
+                   "|---|---:|---:|---:|---:|\n";
+  const auto line = [&](const char* name, const DirectionCalibration& d, double unit, const char* u) {
+    md += std::string("| ") + name + " | " + std::to_string(d.observed) + " | " + number(d.rms * unit, 3) + " " + u + " | " +
+          number(100.0 * d.beyond3Sigma, 1) + " % | " + number(d.medianNees, 2) + " |\n";
+  };
+  line("along", s.priors.along, 1.0, "m");
+  line("lateral", s.priors.lateral, 1.0, "m");
+  line("yaw", s.priors.yaw, 180.0 / std::numbers::pi, "deg");
+  md += "\nLogs whose ATE RMSE with priors is more than 10 % above the odometry's: " + std::to_string(s.logsWorse) +
+        " (largest ratio " + number(s.worstRatio, 2) + ").\n";
+  return md;
+}
+
 void forEachRow(const EvalSummary& s, const std::function<void(const char*, const ErrorStats&)>& fn) {
   fn("odometry", s.odometry);
   if (s.optimized) fn(kOptimizedName, *s.optimized);
@@ -65,7 +96,11 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
       header.push_back(std::string(t) + "_" + c);
     }
   }
-  for (const char* c : {"matches_accepted", "matches_degenerate", "matches_rejected", "pipeline_s", "error"}) header.push_back(c);
+  for (const char* c : {"matches_accepted", "matches_degenerate", "matches_rejected", "prior_lateral_rms_m",
+                        "prior_lateral_beyond_3sigma", "prior_lateral_median_nees", "prior_yaw_rms_deg",
+                        "prior_yaw_beyond_3sigma", "prior_yaw_median_nees", "pipeline_s", "error"}) {
+    header.push_back(c);
+  }
   std::string csv = csvRow(header);
   for (const LogEvaluation& log : logs) {
     std::vector<std::string> row = {log.id, log.path.string()};
@@ -81,8 +116,11 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
     appendTrajectory(row, log.optimized);
     if (log.optimized) {
       for (size_t n : {log.matchesAccepted, log.matchesDegenerate, log.matchesRejected}) row.push_back(std::to_string(n));
+      const MatchCalibration c = calibrateMatches(log.priorErrors);
+      appendDirection(row, c.lateral, 1.0);
+      appendDirection(row, c.yaw, 180.0 / std::numbers::pi);
     } else {
-      row.insert(row.end(), 3, "");
+      row.insert(row.end(), 9, "");
     }
     row.push_back(number(log.pipelineSeconds, 2));
     row.push_back("");
@@ -98,6 +136,7 @@ std::string summaryMarkdown(const EvalSummary& s) {
     for (double v : {e.mean, e.median, e.rmse, e.std, e.max}) md += " | " + number(v, 3);
     md += " |\n";
   });
+  if (s.optimized) md += calibrationMarkdown(s);
   return md;
 }
 

@@ -1,5 +1,7 @@
 #include "engine/eval/eval_summary.h"
 
+#include <algorithm>
+
 namespace hdprior {
 namespace {
 
@@ -29,6 +31,7 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
   EvalSummary s;
   s.logs = logs.size();
   ErrorStats odometry, optimized;
+  std::vector<MatchErrorSample> priors;
   for (const LogEvaluation& log : logs) {
     if (!log.ok()) {
       ++s.failed;
@@ -36,7 +39,14 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
     }
     if (log.odometry) accumulate(odometry, log.odometry->ate.translation);
     if (log.optimized) accumulate(optimized, log.optimized->ate.translation);
+    priors.insert(priors.end(), log.priorErrors.begin(), log.priorErrors.end());
+    if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {
+      const double ratio = log.optimized->ate.translation.rmse / log.odometry->ate.translation.rmse;
+      s.worstRatio = std::max(s.worstRatio, ratio);
+      s.logsWorse += ratio > 1.1;
+    }
   }
+  s.priors = calibrateMatches(priors);
   s.odometry = averaged(odometry);
   if (optimized.count > 0) s.optimized = averaged(optimized);
   return s;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/eval/match_calibration.h"
 #include "engine/eval/trajectory_errors.h"
 
 namespace hdprior {
@@ -16,6 +17,7 @@ struct LogEvaluation {
   std::optional<TrajectoryEvaluation> odometry;
   std::optional<TrajectoryEvaluation> optimized;  // with priors
   size_t matchesAccepted = 0, matchesDegenerate = 0, matchesRejected = 0;
+  std::vector<MatchErrorSample> priorErrors;  // the priors the graph used, against the truth
   double pipelineSeconds = 0;
   std::string error;  // empty when the log went through
 
@@ -28,6 +30,11 @@ struct EvalSummary {
   size_t logs = 0, failed = 0;
   ErrorStats odometry;
   std::optional<ErrorStats> optimized;  // when any successful log has an optimised trajectory
+  // With priors: every log's priors pooled, and the logs whose ATE RMSE the priors made more than
+  // 10 % worse than the odometry's (the largest optimised / odometry ratio among all).
+  MatchCalibration priors;
+  size_t logsWorse = 0;
+  double worstRatio = 0.0;
 };
 EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);
 

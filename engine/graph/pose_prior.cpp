@@ -16,28 +16,12 @@ double priorAltitude(const GroundHeight& ground, double x, double y, double egoH
   return ground.bilinearAt(Eigen::Vector2d(x, y)) + egoHeight;
 }
 
-Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
-  const double largest = std::max(eig.eigenvalues().maxCoeff(), 0.0);
-  Eigen::Matrix3d observed = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < 3; ++i) {
-    if (eig.eigenvalues()(i) > 1e-9 * largest && largest > 0.0) observed += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
-  }
-  return observed;
-}
-
 Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options) {
   const Eigen::Matrix3d observed = observedProjector(information);
   const double yaw = options.minSigmaYawDeg * std::numbers::pi / 180.0;
   const Eigen::Matrix3d floor = Eigen::Vector3d(options.minSigmaXY * options.minSigmaXY, options.minSigmaXY * options.minSigmaXY, yaw * yaw).asDiagonal();
   const Eigen::Matrix3d covariance = information.completeOrthogonalDecomposition().pseudoInverse() + observed * floor * observed;
   return observed * covariance.completeOrthogonalDecomposition().pseudoInverse() * observed;
-}
-
-Eigen::Matrix3d withVarianceAlong(const Eigen::Matrix3d& information, const Eigen::Vector3d& a, double sigma) {
-  const Eigen::Vector3d Ia = information * a;
-  const double denominator = 1.0 + sigma * sigma * a.dot(Ia);
-  return information - sigma * sigma * Ia * Ia.transpose() / denominator;
 }
 
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
@@ -65,6 +49,15 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   }
   prior.information(3, 3) = std::isfinite(z) ? 1.0 / (options.altitudeSigma * options.altitudeSigma) : 0.0;
   return prior;
+}
+
+Eigen::Matrix3d planarInformation(const PosePrior& prior) {
+  const int order[3] = {1, 2, 0};  // (x, y, yaw) -> (yaw, x, y, z)
+  Eigen::Matrix3d information;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) information(r, c) = prior.information(order[r], order[c]);
+  }
+  return information;
 }
 
 PriorResidual priorResidual(const PosePrior& prior, const SE3& pose) {

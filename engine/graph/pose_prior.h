@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include "engine/geom/information.h"
 #include "engine/geom/se3.h"
 
 namespace hdprior {
@@ -31,20 +32,16 @@ struct PosePriorOptions {
   bool alongTrack = true;
 };
 
+// The prior's information over the planar pose (x, y, yaw), the order of a match's.
+Eigen::Matrix3d planarInformation(const PosePrior& prior);
+
 // The altitude z* of the ego origin at (x, y): ground height (bilinear) plus egoHeight; NaN
 // outside the raster's region of interest.
 double priorAltitude(const GroundHeight& ground, double x, double y, double egoHeight);
 
-// The projector onto the directions (x, y, yaw) in which an information matrix is not zero.
-Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information);
-
 // The match's information over (x, y, yaw) with the options' floors added to its covariance in the
 // directions the match observes; unobservable directions keep zero information.
 Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options);
-
-// The information of a Gaussian whose covariance gains sigma^2 along the unit direction a
-// (Woodbury; exact for a singular information too, e.g. a degenerate match's).
-Eigen::Matrix3d withVarianceAlong(const Eigen::Matrix3d& information, const Eigen::Vector3d& a, double sigma);
 
 // Builds the prior from a match (its estimate and information over x, y, yaw) and the
 // odometry pose that supplies roll and pitch, and the place in the directions the match does not

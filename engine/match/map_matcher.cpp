@@ -8,6 +8,7 @@
 #include "engine/map/hd_map.h"
 #include "engine/match/curb_refinement.h"
 #include "engine/match/match_assessment.h"
+#include "engine/match/match_uncertainty.h"
 #include "engine/match/ndt_optimizer.h"
 #include "engine/match/pcl_ndt_backend.h"
 
@@ -25,6 +26,12 @@ void validate(const MatchOptions& o) {
   if (!(o.yawLength > 0) || !(o.degenerateRatio >= 0 && o.degenerateRatio < 1) || !(o.minInformation >= 0) ||
       !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {
     bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
+  }
+  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
+      !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.evidenceCurbBand > 0) ||
+      !(o.evidenceCurbShare >= 0 && o.evidenceCurbShare < 1) || !(o.mapSigma >= 0) ||
+      !(o.mapSigmaYawDeg >= 0) || !(o.maxSigmaAlong > 0) || !(o.maxSigmaLateral > 0) || !(o.maxSigmaYawDeg > 0)) {
+    bad("evidence uncertainty options out of range");
   }
   if (o.minPoints < 1 || !(o.minInlierRatio >= 0 && o.minInlierRatio <= 1) || !(o.gateChi2 > 0) ||
       !(o.predictionSigma.minCoeff() > 0)) {
@@ -80,6 +87,9 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eig
     r.path = {initial};
   }
   assessMatch(*levels_.back(), map_.drivable(), map_.boundaryDistance(), points, options_, timedOut, r);
+  if (options_.evidenceUncertainty && r.status != MatchStatus::Rejected) {
+    widenToEvidence(plausibleHalfWidths(map_.boundaryDistance(), points, curbPoints, r.estimate, options_), options_, r);
+  }
   r.timeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

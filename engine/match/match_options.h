@@ -60,6 +60,27 @@ struct MatchOptions {
   Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
   double minScorePerPoint = 0.0;        // NDT score per point on the finest grid (max |d1|, 2.2 at 1 m)
+
+  // --- Honest uncertainty (both backends; engine/match/match_uncertainty.h) ---
+  // The Laplace covariance describes the score's curvature at its optimum, not the match's error: on
+  // a wide street or junction the points fit anywhere on a plateau. Each direction's sigma is raised
+  // to the half-width of the poses the points allow / evidenceKappa, the map's own error is added,
+  // and a direction beyond its cap is reported unobservable.
+  bool evidenceUncertainty = true;
+  double evidenceShare = 0.01;          // poses are allowed while at most this share of the points ...
+  int evidenceMinPoints = 5;            // ... (at least this many) leave the drivable area
+  double evidenceMargin = 0.2;          // metres beyond the boundary before a point counts as off
+  double evidenceCurbBand = 0.5;        // curb points (on the boundary at the estimate) count as off beyond this
+  double evidenceCurbShare = 0.2;       // share of those that may leave
+  int evidenceStride = 4;               // every n-th road point is counted
+  double evidenceMaxOffset = 3.2;       // metres searched along and across the heading ...
+  double evidenceMaxYawDeg = 6.4;       // ... and in yaw; beyond: unbounded
+  double evidenceKappa = 1.7;           // half-width = kappa sigma (uniform over the interval: sqrt 3)
+  double mapSigma = 0.10;               // metres: the drivable polygon's own error against the kerb
+  double mapSigmaYawDeg = 0.10;
+  double maxSigmaAlong = 1.5;           // metres; a direction less certain than this is reported unobservable
+  double maxSigmaLateral = 0.5;
+  double maxSigmaYawDeg = 1.0;
 };
 
 }  // namespace hdprior

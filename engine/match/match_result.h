@@ -28,6 +28,12 @@ struct MatchResult {
   Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();
   Eigen::Matrix3d eigenvectors = Eigen::Matrix3d::Identity();
   int observableDirections = 0;
+  // How far the pose can move (along, lateral metres, yaw radians; +infinity: unbounded) before the
+  // road points leave the drivable area (match_uncertainty.h); zero when not computed.
+  Eigen::Vector3d evidenceHalfWidths = Eigen::Vector3d::Zero();
+  // The Laplace (score curvature) sigmas before widening, in the estimate's frame (along, lateral metres,
+  // yaw radians; +infinity where unobservable); zero when not computed.
+  Eigen::Vector3d laplaceSigmas = Eigen::Vector3d::Zero();
   MatchStatus status = MatchStatus::Rejected;
   std::string reason;        // why it is degenerate or rejected
   double score = 0.0;        // NDT score at the estimate on the finest grid

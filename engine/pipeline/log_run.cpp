@@ -22,6 +22,7 @@ LogEvaluation logEvaluation(const ArgoverseLog& log, const EvaluatedRun& r) {
   e.matchesAccepted = r.metrics.matches.accepted;
   e.matchesDegenerate = r.metrics.matches.degenerate;
   e.matchesRejected = r.metrics.matches.rejected;
+  e.priorErrors = r.metrics.priorErrors;
   e.pipelineSeconds = r.run.times.pipelineS;
   return e;
 }

@@ -1,6 +1,7 @@
 #include "engine/pipeline/pipeline_run.h"
 
 #include "engine/error.h"
+#include "engine/geom/se2.h"
 #include "engine/map/hd_map.h"
 #include "engine/pipeline/session.h"
 
@@ -35,7 +36,12 @@ RunMetrics evaluateRun(const PipelineRun& run) {
     ++(k.match.status == MatchStatus::Accepted ? m.matches.accepted
        : k.match.status == MatchStatus::Degenerate ? m.matches.degenerate
                                                    : m.matches.rejected);
+    if (k.hasPrior && run.groundTruth.covers(k.timestampNs)) {
+      m.priorErrors.push_back(matchErrorSample(planarPose(run.groundTruth.at(k.timestampNs)), planarPose(k.prior.pose),
+                                               planarInformation(k.prior)));
+    }
   }
+  m.priorCalibration = calibrateMatches(m.priorErrors);
   return m;
 }
 

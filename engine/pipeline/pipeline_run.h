@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/eval/match_calibration.h"
 #include "engine/eval/trajectory_errors.h"
 #include "engine/geom/pose_trajectory.h"
 #include "engine/graph/pose_graph.h"
@@ -70,6 +71,10 @@ struct RunMetrics {
   std::optional<TrajectoryEvaluation> optimized;
   std::vector<TrajectoryEvaluation> odometryAligned;
   MatchCounts matches;
+  // The priors the graph used against the ground truth at their keyframes (planar pose and
+  // information over x, y, yaw, as the prior factor has them), and how honest their sigmas are.
+  std::vector<MatchErrorSample> priorErrors;
+  MatchCalibration priorCalibration;
 };
 RunMetrics evaluateRun(const PipelineRun& run);
 

@@ -1,10 +1,12 @@
 #include "engine/pipeline/run_outputs.h"
 
+#include <cmath>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "engine/geom/se2.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/ply_writer.h"
 #include "engine/io/tum_trajectory.h"
@@ -42,12 +44,38 @@ json evaluationJson(const TrajectoryEvaluation& e) {
           {"rpe_10m", rpeJson(e.rpe10)}, {"rpe_100m", rpeJson(e.rpe100)}};
 }
 
+json sigmaJson(double sigma, double unit = 1.0) { return std::isfinite(sigma) ? json(sigma * unit) : json(nullptr); }
+
+// A prior against the truth; an unobservable direction's sigma is null.
+json priorErrorJson(const MatchErrorSample& s) {
+  const double deg = 180.0 / std::numbers::pi;
+  return {{"along_m", s.error(0)}, {"lateral_m", s.error(1)}, {"yaw_deg", s.error(2) * deg},
+          {"sigma_along_m", sigmaJson(s.sigma(0))}, {"sigma_lateral_m", sigmaJson(s.sigma(1))},
+          {"sigma_yaw_deg", sigmaJson(s.sigma(2), deg)}};
+}
+
+json directionJson(const DirectionCalibration& d, double unit = 1.0) {
+  return {{"observed", d.observed}, {"rms", d.rms * unit}, {"share_beyond_3_sigma", d.beyond3Sigma},
+          {"median_nees", d.medianNees}};
+}
+
+json calibrationJson(const MatchCalibration& c) {
+  return {{"priors", c.matches}, {"along_m", directionJson(c.along)}, {"lateral_m", directionJson(c.lateral)},
+          {"yaw_deg", directionJson(c.yaw, 180.0 / std::numbers::pi)}};
+}
+
 json matchJson(const KeyframeMatch& k) {
   const MatchResult& r = k.match;
   return {{"status", toString(r.status)}, {"reason", r.reason}, {"road_points", r.points},
           {"initial", planarJson(r.initial)}, {"estimate", planarJson(r.estimate)},
           {"covariance_x_y_yaw", matrixJson(r.covariance)}, {"score", r.score}, {"score_per_point", r.scorePerPoint},
           {"inlier_ratio", r.inlierRatio}, {"gate_chi2", r.gateChi2}, {"observable_directions", r.observableDirections},
+          {"evidence_half_widths", {{"along_m", sigmaJson(r.evidenceHalfWidths.x())},
+                                    {"lateral_m", sigmaJson(r.evidenceHalfWidths.y())},
+                                    {"yaw_deg", sigmaJson(r.evidenceHalfWidths.z(), 180.0 / std::numbers::pi)}}},
+          {"laplace_sigmas", {{"along_m", sigmaJson(r.laplaceSigmas.x())},
+                              {"lateral_m", sigmaJson(r.laplaceSigmas.y())},
+                              {"yaw_deg", sigmaJson(r.laplaceSigmas.z(), 180.0 / std::numbers::pi)}}},
           {"iterations", r.iterations}, {"time_ms", r.timeMs}, {"prior", k.hasPrior}};
 }
 
@@ -61,6 +89,15 @@ json keyframesJson(const PipelineRun& run) {
               {"relative_covariance_v_w", cov}, {"submap_frames", kf.submapFrames}};
     if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
     if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
+    if (k < run.matches.size() && run.groundTruth.covers(kf.timestampNs)) {
+      const Eigen::Vector3d e = planarError(planarPose(run.groundTruth.at(kf.timestampNs)), run.matches[k].match.estimate);
+      j["match_error"] = {{"along_m", e.x()}, {"lateral_m", e.y()}, {"yaw_deg", e.z() * 180.0 / std::numbers::pi}};
+    }
+    if (k < run.matches.size() && run.matches[k].hasPrior && run.groundTruth.covers(kf.timestampNs)) {
+      const KeyframeMatch& m = run.matches[k];
+      j["prior_error"] = priorErrorJson(matchErrorSample(planarPose(run.groundTruth.at(kf.timestampNs)),
+                                                         planarPose(m.prior.pose), planarInformation(m.prior)));
+    }
     keyframes.push_back(j);
   }
   return keyframes;

@@ -1,0 +1,123 @@
+// Honest match uncertainty: how far the road points let the pose move (plausibleHalfWidths), and the
+// information widened to it (widenToEvidence), on synthetic maps.
+#include "engine/match/match_uncertainty.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/LU>
+
+#include "../map/synthetic_maps.h"
+#include "ring_road_points.h"
+#include "engine/geom/se2.h"
+#include "engine/map/hd_map.h"
+#include "engine/match/map_matcher.h"
+
+namespace hdprior {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+HdMap buildMap(VectorMap vm) {
+  HdMapOptions o;
+  o.ndtCellSizes = MatchOptions{}.cellSizes;
+  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
+}
+
+// A 10 m corridor seen kerb to kerb: the points pin the lateral place and yaw to a few decimetres
+// and tenths of a degree, and leave the place along the corridor unbounded.
+TEST(MatchUncertainty, AFullySeenCorridorBoundsLateralAndYawButNotAlong) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const Eigen::Vector3d truth(3.0, 1.5, 0.05);
+  const auto points = test::ringRoadPoints(map.drivable(), truth);
+  const Eigen::Vector3d w = plausibleHalfWidths(map.boundaryDistance(), points, {}, truth, MatchOptions{});
+  EXPECT_TRUE(std::isinf(w.x())) << w.transpose();
+  EXPECT_LT(w.y(), 0.4);
+  EXPECT_GT(w.y(), 0.05);
+  EXPECT_LT(w.z(), 1.5 * kDeg);
+}
+
+// Road points on a 4 m strip down the middle of a 40 m wide road (what the lidar labels road on a
+// wide street whose far lanes it calls other ground): every pose within metres fits, and the match
+// must not claim otherwise.
+TEST(MatchUncertainty, ANarrowStripInAWideRoadIsReportedUnobservable) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
+  const Eigen::Vector3d truth(0.0, 0.0, 0.0);
+  std::vector<Eigen::Vector2d> strip;
+  for (double x = -30.0; x <= 30.0; x += 0.2)
+    for (double y = -2.0; y <= 2.0; y += 0.25) strip.emplace_back(x, y);
+  const Eigen::Vector3d w = plausibleHalfWidths(map.boundaryDistance(), strip, {}, truth, MatchOptions{});
+  EXPECT_TRUE(std::isinf(w.x()));
+  EXPECT_TRUE(std::isinf(w.y()));
+  EXPECT_TRUE(std::isinf(w.z()));
+  MatchOptions o;
+  o.timeBudgetMs = 1e6;
+  MapMatcher matcher(map, o);
+  const MatchResult r = matcher.match(strip, offsetPose(truth, {0.0, 1.0, 1.0 * kDeg}));
+  EXPECT_EQ(r.status, MatchStatus::Rejected) << r.reason;
+  EXPECT_EQ(r.observableDirections, 0);
+  EXPECT_TRUE(r.information.isZero());
+}
+
+// Road points along one side of a 40 m road: they bound the pose towards that kerb only, so the
+// lateral place is unbounded; the curb points where the lidar saw that kerb pin it.
+TEST(MatchUncertainty, OneSidedRoadPointsNeedTheCurbToBoundTheLateralPlace) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
+  const Eigen::Vector3d truth(0.0, 0.0, 0.0);
+  std::vector<Eigen::Vector2d> strip, curbs;
+  for (int i = 0; i <= 300; ++i) {
+    const double x = -30.0 + 0.2 * i;
+    for (double y = -19.9; y <= -16.0; y += 0.25) strip.emplace_back(x, y);
+    if (i % 5 == 0) curbs.emplace_back(x, -20.0);  // a curb point every metre
+  }
+  const Eigen::Vector3d roadOnly = plausibleHalfWidths(map.boundaryDistance(), strip, {}, truth, MatchOptions{});
+  EXPECT_TRUE(std::isinf(roadOnly.y())) << roadOnly.transpose();
+  const Eigen::Vector3d withCurbs = plausibleHalfWidths(map.boundaryDistance(), strip, curbs, truth, MatchOptions{});
+  EXPECT_LT(withCurbs.y(), 0.6) << withCurbs.transpose();
+  EXPECT_LT(withCurbs.z(), 1.5 * kDeg);
+  EXPECT_TRUE(std::isinf(withCurbs.x()));
+}
+
+// The widened covariance: each axis (estimate frame) at least half-width / kappa, plus the map's
+// error, cross terms kept; an axis beyond its cap is marginalised out and the match is degenerate.
+TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCaps) {
+  MatchOptions o;
+  o.evidenceKappa = 2.0;
+  o.mapSigma = 0.1;
+  o.mapSigmaYawDeg = 0.0;
+  MatchResult r;
+  r.status = MatchStatus::Accepted;
+  r.estimate = {5.0, 7.0, 0.5};
+  // Laplace: along 0.02 m, lateral 0.03 m, yaw 0.05 deg in the estimate's frame, lateral-yaw correlated.
+  Eigen::Matrix3d local;
+  const double sy = 0.05 * kDeg;
+  local << 0.02 * 0.02, 0, 0, 0, 0.03 * 0.03, 0.5 * 0.03 * sy, 0, 0.5 * 0.03 * sy, sy * sy;
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  R.topLeftCorner<2, 2>() << std::cos(0.5), -std::sin(0.5), std::sin(0.5), std::cos(0.5);
+  r.covariance = R * local * R.transpose();
+  r.information = r.covariance.inverse();
+  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDeg), o, r);
+  EXPECT_EQ(r.status, MatchStatus::Accepted);
+  EXPECT_EQ(r.observableDirections, 3);
+  const Eigen::Matrix3d c = R.transpose() * r.covariance * R;
+  EXPECT_NEAR(std::sqrt(c(0, 0)), std::hypot(0.02, 0.1), 1e-9);   // Laplace beats the evidence, plus map
+  EXPECT_NEAR(std::sqrt(c(1, 1)), std::hypot(0.2, 0.1), 1e-9);    // evidence 0.4 / 2, plus map
+  EXPECT_NEAR(std::sqrt(c(2, 2)), 0.2 * kDeg, 1e-12);
+  EXPECT_NEAR(c(1, 2), 0.5 * 0.03 * sy, 1e-12);                   // variance added along the axes: covariances kept
+  EXPECT_TRUE((r.information * r.covariance).isApprox(Eigen::Matrix3d::Identity(), 1e-6));
+
+  o.maxSigmaLateral = 0.15;
+  r.status = MatchStatus::Accepted;
+  r.covariance = R * local * R.transpose();
+  r.information = r.covariance.inverse();
+  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDeg), o, r);
+  EXPECT_EQ(r.status, MatchStatus::Degenerate);
+  EXPECT_EQ(r.observableDirections, 2);
+  const Eigen::Vector3d lateral(-std::sin(0.5), std::cos(0.5), 0.0);
+  EXPECT_LT((r.information * lateral).norm(), 1e-9 * r.information.norm());
+}
+
+}  // namespace
+}  // namespace hdprior
