@@ -11,6 +11,7 @@
 #include "engine/match/match_uncertainty.h"
 #include "engine/match/ndt_optimizer.h"
 #include "engine/match/pcl_ndt_backend.h"
+#include "engine/match/stale_regions.h"
 
 namespace hdprior {
 namespace {
@@ -28,7 +29,8 @@ void validate(const MatchOptions& o) {
     bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
   }
   if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
-      !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.evidenceCurbBand > 0) ||
+      !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.staleRegionSize > 0) || !(o.staleDistance > 0) || !(o.staleDistancePerMetre >= 0) ||
+      !(o.staleShare >= 0 && o.staleShare <= 1) || !(o.evidenceCurbBand > 0) ||
       !(o.evidenceCurbShare >= 0 && o.evidenceCurbShare < 1) || !(o.mapSigma >= 0) ||
       !(o.mapSigmaYawDeg >= 0) || !(o.maxSigmaAlong > 0) || !(o.maxSigmaLateral > 0) || !(o.maxSigmaYawDeg > 0)) {
     bad("evidence uncertainty options out of range");
@@ -52,13 +54,18 @@ MapMatcher::MapMatcher(const HdMap& map, MatchOptions options) : map_(map), opti
 
 MapMatcher::~MapMatcher() = default;
 
-MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial,
-                              std::span<const Eigen::Vector2d> curbPoints) {
+MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> roadPoints, const Eigen::Vector3d& initial,
+                              std::span<const Eigen::Vector2d> curbs) {
   const auto start = std::chrono::steady_clock::now();
+  RegionSelection selection;
+  if (options_.staleRegions) selection = pointsInAgreeingRegions(map_.boundaryDistance(), roadPoints, curbs, initial, options_);
+  const std::span<const Eigen::Vector2d> points = options_.staleRegions ? std::span<const Eigen::Vector2d>(selection.road) : roadPoints;
+  const std::span<const Eigen::Vector2d> curbPoints = options_.staleRegions ? std::span<const Eigen::Vector2d>(selection.curbs) : curbs;
   const auto deadline = start + std::chrono::microseconds(int64_t(options_.timeBudgetMs * 1000.0));
   MatchResult r;
   r.initial = initial;
   r.points = points.size();
+  r.staleRegionPoints = selection.droppedPoints;
   bool timedOut = false;
   if (points.size() >= size_t(options_.minPoints)) {
     if (pcl_) {

@@ -61,6 +61,13 @@ struct MatchOptions {
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
   double minScorePerPoint = 0.0;        // NDT score per point on the finest grid (max |d1|, 2.2 at 1 m)
 
+  // --- A stale map (engine/match/stale_regions.h): regions where the map disagrees are left out ---
+  bool staleRegions = true;
+  double staleRegionSize = 5.0;         // metres, square regions of the key frame
+  double staleDistance = 1.5;           // metres outside the drivable area at the prediction, plus ...
+  double staleDistancePerMetre = 0.07;  // ... this per metre of range (the prediction's yaw uncertainty) ...
+  double staleShare = 0.5;              // ... for more than this share of a region's points
+
   // --- Honest uncertainty (both backends; engine/match/match_uncertainty.h) ---
   // The Laplace covariance describes the score's curvature at its optimum, not the match's error: on
   // a wide street or junction the points fit anywhere on a plateau. Each direction's sigma is raised

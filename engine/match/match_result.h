@@ -45,7 +45,8 @@ struct MatchResult {
   // fine; PCL's start and result), then the curb refinement's result if it moved the pose.
   std::vector<Eigen::Vector3d> path;
   double timeMs = 0.0;
-  size_t points = 0;
+  size_t points = 0;             // road points matched
+  size_t staleRegionPoints = 0;  // road points left out in regions where the map disagrees
 };
 
 }  // namespace hdprior

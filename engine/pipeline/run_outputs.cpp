@@ -66,7 +66,7 @@ json calibrationJson(const MatchCalibration& c) {
 
 json matchJson(const KeyframeMatch& k) {
   const MatchResult& r = k.match;
-  return {{"status", toString(r.status)}, {"reason", r.reason}, {"road_points", r.points},
+  return {{"status", toString(r.status)}, {"reason", r.reason}, {"road_points", r.points}, {"stale_region_points", r.staleRegionPoints},
           {"initial", planarJson(r.initial)}, {"estimate", planarJson(r.estimate)},
           {"covariance_x_y_yaw", matrixJson(r.covariance)}, {"score", r.score}, {"score_per_point", r.scorePerPoint},
           {"inlier_ratio", r.inlierRatio}, {"gate_chi2", r.gateChi2}, {"observable_directions", r.observableDirections},

@@ -1,0 +1,67 @@
+// A stale map: the road points of a street the map no longer has are left out region by region, and
+// the rest still match (issue 16: "reject per region, not per keyframe").
+#include "engine/match/stale_regions.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../map/synthetic_maps.h"
+#include "ring_road_points.h"
+#include "engine/eval/match_calibration.h"
+#include "engine/geom/se2.h"
+#include "engine/map/hd_map.h"
+#include "engine/match/map_matcher.h"
+
+namespace hdprior {
+namespace {
+
+HdMap buildMap(VectorMap vm) {
+  HdMapOptions o;
+  o.ndtCellSizes = MatchOptions{}.cellSizes;
+  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
+}
+
+TEST(StaleRegions, AStreetMissingFromTheMapIsLeftOutAndTheRestStillMatches) {
+  // The world: a corridor crossed by a wide street; the map: the corridor and a short stub of one arm.
+  const HdMap world = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-20, 5, 20, 60),
+                                            test::rectangle(-20, -60, 20, -5)}));
+  const HdMap stale = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-20, 5, 20, 8)}));
+  const Eigen::Vector3d truth(0.0, 0.0, 0.0);
+  const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(world.drivable(), truth);
+
+  const RegionSelection s = pointsInAgreeingRegions(stale.boundaryDistance(), points, {}, truth, MatchOptions{});
+  EXPECT_GT(s.droppedRegions, 0u);
+  EXPECT_GT(s.droppedPoints, points.size() / 4);
+  for (const Eigen::Vector2d& p : s.road) EXPECT_LT(std::abs(p.y()), 20.0) << "a point of the missing street was kept";
+
+  MatchOptions o;
+  o.timeBudgetMs = 1e6;
+  const Eigen::Vector3d start = offsetPose(truth, {0.0, 0.8, 0.02});
+  o.staleRegions = false;
+  const MatchResult whole = MapMatcher(stale, o).match(points, start);
+  EXPECT_EQ(whole.status, MatchStatus::Rejected) << "inliers " << whole.inlierRatio;
+  o.staleRegions = true;
+  const MatchResult regional = MapMatcher(stale, o).match(points, start);
+  EXPECT_NE(regional.status, MatchStatus::Rejected) << regional.reason;
+  EXPECT_GT(regional.staleRegionPoints, points.size() / 4);
+  // What is left (the corridor and the mapped stub, partly leaking into the missing arms) says
+  // honestly how well it places the vehicle.
+  const MatchErrorSample e = matchErrorSample(truth, regional.estimate, regional.information);
+  EXPECT_FALSE(std::abs(e.error(1)) > 3.0 * e.sigma(1)) << e.error.transpose() << " / " << e.sigma.transpose();
+  EXPECT_FALSE(std::abs(e.error(2)) > 3.0 * e.sigma(2)) << e.error.transpose() << " / " << e.sigma.transpose();
+}
+
+// Where the map agrees everywhere nothing is left out.
+TEST(StaleRegions, AnUpToDateMapKeepsEveryPoint) {
+  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-12, 5, 12, 40)}));
+  const Eigen::Vector3d truth(1.0, -0.5, 0.02);
+  const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), truth);
+  const RegionSelection s = pointsInAgreeingRegions(map.boundaryDistance(), points, points, offsetPose(truth, {0.5, 1.0, 0.02}), MatchOptions{});
+  EXPECT_EQ(s.droppedPoints, 0u);
+  EXPECT_EQ(s.road.size(), points.size());
+  EXPECT_EQ(s.curbs.size(), points.size());
+}
+
+}  // namespace
+}  // namespace hdprior
