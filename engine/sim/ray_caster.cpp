@@ -156,11 +156,17 @@ std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& o
                                     double maxRange) {
   const double horiz = dir.head<2>().norm();
   const double lipschitz = std::abs(dir.z()) + scene.maxSlope() * horiz;
-  constexpr double kMaxCurb = 0.2;  // Scene::curbHeight never exceeds it
+  const double maxRise = scene.maxRise();  // the surface never rises more above the ground (0.2 m curbs)
+  const bool roadside = scene.roadside() != nullptr;
   // Height of the ray above the surface at t; also reports the boundary distance there.
   const auto above = [&](double t, double& boundary) {
     const Eigen::Vector3d p = origin + t * dir;
     const Eigen::Vector2d xy = p.head<2>();
+    if (roadside) {
+      const Scene::SurfacePoint s = scene.surfacePoint(xy);
+      boundary = s.boundary;
+      return p.z() - scene.groundHeight(xy) - s.rise;
+    }
     boundary = scene.boundaryDistance(xy);
     const double g = scene.groundHeight(xy);
     return boundary < 0.0 ? p.z() - g : p.z() - g - scene.curbHeight(xy);
@@ -170,7 +176,7 @@ std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& o
   while (true) {
     const Eigen::Vector3d p = origin + t * dir;
     // Far above the highest the surface can be here: a cheap step on the ground alone.
-    const double overEnvelope = p.z() - scene.groundHeight(p.head<2>()) - kMaxCurb;
+    const double overEnvelope = p.z() - scene.groundHeight(p.head<2>()) - maxRise;
     double step;
     if (overEnvelope > 0.05) {
       step = overEnvelope / lipschitz;
@@ -200,18 +206,13 @@ std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& o
   above(b, hitBoundary);
   RayHit hit;
   hit.range = b;
-  const bool curbFace = prevBoundary < 0.0 && hitBoundary >= 0.0 && hPrev > 0.0 && hPrev < kMaxCurb + 0.05 &&
+  const bool curbFace = prevBoundary < 0.0 && hitBoundary >= 0.0 && hPrev > 0.0 && hPrev < maxRise + 0.05 &&
                         b - a < 0.05;
-  if (hitBoundary < 0.0) {
-    hit.label = PointLabel::Road;
-    hit.reflectivity = 12;
-  } else if (hitBoundary < scene.sidewalkWidth()) {
-    hit.label = PointLabel::SidewalkCurb;
-    hit.reflectivity = 30;
-  } else {
-    hit.label = PointLabel::OtherGround;
-    hit.reflectivity = 22;
-  }
+  const double sidewalk = roadside ? scene.sidewalkWidthAt((origin + b * dir).head<2>()) : scene.sidewalkWidth();
+  hit.label = hitBoundary < 0.0        ? PointLabel::Road
+              : hitBoundary < sidewalk ? PointLabel::SidewalkCurb
+                                       : PointLabel::OtherGround;
+  hit.reflectivity = scene.reflectivity(hit.label);
   hit.cosIncidence = curbFace ? horiz : std::abs(dir.z());
   return hit;
 }
