@@ -85,7 +85,8 @@ TEST(Roadside, MapErrorFieldIsBoundedByItsAmplitudeAndSmooth) {
       largest = std::max(largest, std::abs(f));
       const double fx = r.mapErrorField({x + 0.01, y}), fy = r.mapErrorField({x, y + 0.01});
       steepest = std::max(steepest, std::hypot(fx - f, fy - f) / 0.01);
-      gridError = std::max(gridError, std::abs(double(r.at({x, y}).mapOffset) - f));
+      if (std::max(std::abs(x), std::abs(y)) < 149.0)  // the grid is clamped at its border
+        gridError = std::max(gridError, std::abs(double(r.at({x, y}).mapOffset) - f));
     }
   EXPECT_LE(largest, 0.25 + 1e-9);
   EXPECT_GT(largest, 0.12);  // the field reaches a good part of its amplitude
