@@ -104,7 +104,7 @@ Roadside Roadside::build(const RoadsideOptions& o, const Vec2& lo, const Vec2& h
   r.mapError_ = randomWaves<Wave>(3, 0.8 * o.mapErrorWavelength, 1.25 * o.mapErrorWavelength, rng);
   const auto kerbWaves = randomWaves<Wave>(2, 0.7 * o.kerbWavelength, 1.4 * o.kerbWavelength, rng);
   const auto sidewalkWaves = randomWaves<Wave>(2, 60.0, 160.0, rng);
-  const auto reliefWaves = randomWaves<Wave>(3, 6.0, 15.0, rng);
+  const auto reliefWaves = randomWaves<Wave>(3, 8.0, 20.0, rng);
   const StretchField noKerb(160.0, rng), mountable(120.0, rng);
   const auto cuts = kerbCuts(o, kerbPoints, rng);
 
@@ -141,7 +141,7 @@ Roadside Roadside::build(const RoadsideOptions& o, const Vec2& lo, const Vec2& h
         r.cells_[g.index(col, row)].kerbHeight *= float(smoothstep((d - inner) / std::max(1e-6, outer - inner)));
       }
   }
-  const double reliefSlope = o.terrainRelief * 2.0 * std::numbers::pi / 6.0;
+  const double reliefSlope = o.terrainRelief * 2.0 * std::numbers::pi / 8.0;
   r.maxRise_ = std::max(o.camber * o.camberCap,
                         std::max(o.kerbHeightMax, 0.0) + o.sidewalkSlope * o.sidewalkWidthMax + std::abs(o.terrainRelief));
   r.maxSlope_ = o.camber + o.sidewalkSlope + reliefSlope + 0.01;

@@ -79,6 +79,7 @@ class Roadside {
   // Bounds of rise() over the area, and of its slope away from the kerb step and the gutter.
   double maxRise() const { return maxRise_; }
   double maxSlope() const { return maxSlope_; }
+  double roadSlope() const { return 1.15 * options_.camber + 0.005; }  // on the road
 
  private:
   struct Wave {

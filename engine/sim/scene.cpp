@@ -27,6 +27,7 @@ Scene::Scene(GridGeometry groundGrid, std::vector<float> groundHeights, Boundary
   // Capped: float16 steps and fill seams make single pixel pairs look steep; a ray that
   // overshoots such a spot is still caught one step later and refined by bisection.
   maxSlope_ = std::clamp(std::sqrt(2.0) * slope / groundGrid_.resolution + 0.01, 0.02, 0.25);
+  groundSlope_ = roadSlope_ = maxSlope_;
 }
 
 double Scene::groundHeight(const Eigen::Vector2d& city) const {
@@ -44,7 +45,8 @@ double Scene::groundHeight(const Eigen::Vector2d& city) const {
 }
 
 void Scene::setRoadside(Roadside roadside) {
-  maxSlope_ = std::min(maxSlope_ + roadside.maxSlope(), 0.4);
+  roadSlope_ = std::min(groundSlope_ + roadside.roadSlope(), 0.4);
+  maxSlope_ = std::min(groundSlope_ + roadside.maxSlope(), 0.4);
   maxRise_ = roadside.maxRise();
   roadside_ = std::move(roadside);
 }

@@ -78,8 +78,11 @@ class Scene {
   double surfaceHeight(const Eigen::Vector2d& city) const;
   double sidewalkWidth() const { return sidewalkWidth_; }
   double sidewalkWidthAt(const Eigen::Vector2d& city) const;
-  // Bound of |grad surfaceHeight| used by the ray marcher (away from kerbs and gutters).
+  // Bounds of |grad surfaceHeight| used by the ray marcher (away from kerbs and gutters):
+  // anywhere, of the ground height alone, and on the road. Without a roadside all the same.
   double maxSlope() const { return maxSlope_; }
+  double groundSlope() const { return groundSlope_; }
+  double roadSlope() const { return roadSlope_; }
   // Bound of surfaceHeight - groundHeight (0.2 m without a roadside).
   double maxRise() const { return maxRise_; }
   // Of the road, the sidewalks and the ground beyond.
@@ -114,7 +117,7 @@ class Scene {
   std::vector<float> heights_;
   BoundaryDistance curb_;
   double sidewalkWidth_;
-  double maxSlope_ = 0.1, maxRise_ = 0.2;
+  double maxSlope_ = 0.1, groundSlope_ = 0.1, roadSlope_ = 0.1, maxRise_ = 0.2;
   std::optional<Roadside> roadside_;
   double curbPhase_[2] = {0.0, 0.0};
   std::vector<SceneBox> boxes_;

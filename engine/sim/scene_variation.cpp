@@ -49,7 +49,7 @@ void drawRoadside(Draw& draw, RoadsideOptions& r) {
   r.sidewalkWidthMin = draw(2.0, 4.5);
   r.sidewalkWidthMax = std::min(6.0, r.sidewalkWidthMin + draw(0.0, 2.0));
   r.sidewalkSlope = draw(0.01, 0.04);
-  r.terrainRelief = draw(0.02, 0.10);
+  r.terrainRelief = draw(0.02, 0.08);
   r.roadReflectivity = uint8_t(std::lround(draw(8.0, 18.0)));
   r.sidewalkReflectivity = uint8_t(std::lround(draw(22.0, 45.0)));
   r.terrainReflectivity = uint8_t(std::lround(draw(10.0, 35.0)));

@@ -51,7 +51,7 @@ struct SceneVariation {
 // vary smoothly along the streets): kerb height 0-0.25 m varying, with 0-30 % verge without
 // kerb, 0-50 % mountable kerbs rising over 0.3-0.6 m, kerb cuts of 3-6 m every 25-80 m; gutters
 // 0.3-0.5 m wide and 2-5 cm deep; camber 1-3 % up to 2.5-5 m in; sidewalks 2-6 m wide varying
-// with a 1-4 % cross slope, verge relief 2-10 cm; map error 0-0.3 m over 20-80 m; parked cars
+// with a 1-4 % cross slope, verge relief 2-8 cm; map error 0-0.3 m over 20-80 m; parked cars
 // 0-90 %; buildings 0.1-0.8 swinging by 0-80 %; trees 0.1-0.5; bushes and hedges 0.1-0.6;
 // islands 0-0.5; towns' streets 6-9 .. 18-30 m wide, junction margin 4-10 m; lidar elevation
 // errors up to 0-0.2 deg and range biases up to 0-3 cm per laser, the down lidar's mounting
