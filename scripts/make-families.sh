@@ -4,7 +4,8 @@
 # and one drive of 30 s on the real map of the shared Argoverse 2 log. Towns and seeds of the two
 # families never overlap (tuning: towns 101.., seeds 1001..; validation: towns 201.., seeds 2001..),
 # so nothing tuned on the tuning family has seen a validation world. OUT_DIR/families.tsv lists
-# family, source, seed, seconds and log id. About 4-5 minutes per family for N = 5 on 2 cores.
+# family, source, seed, seconds and log id. N = 5 is ~3,400 sweeps: about 8 minutes on an idle
+# 2-core machine (a family sweep ~0.12 s on 2 threads), several times that under load.
 # Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2).
 set -euo pipefail
 if [[ $# -lt 1 || $# -gt 2 || "$1" == -* ]]; then
