@@ -22,11 +22,11 @@ uint64_t seedOption(const CommandLine& cl, const std::string& name) {
 int runSim(const std::vector<std::string>& args) {
   const CommandLine cl(
       args, {.valued = {"town", "map", "out", "seconds", "seed", "trajectory", "noise", "parked", "map-change",
-                        "threads", "dropout"},
+                        "threads", "dropout", "family"},
              .flags = {"quiet"}, .minPositional = 0, .maxPositional = 0,
              .usage = "hdprior sim (--town SEED | --map LOG) --out DIR [--seconds N] [--seed S] "
-                      "[--trajectory real|route] [--noise M] [--parked P] [--map-change F] [--dropout D] "
-                      "[--threads T] [--quiet]"});
+                      "[--trajectory real|route] [--family tuning|validation] [--noise M] [--parked P] [--map-change F] "
+                      "[--dropout D] [--threads T] [--quiet]"});
   SimulationOptions o;
   if (cl.has("town") == cl.has("map")) throw Error("option --town/--map", "give exactly one of --town SEED and --map LOG");
   if (cl.has("town")) o.townSeed = seedOption(cl, "town");
@@ -42,6 +42,10 @@ int runSim(const std::vector<std::string>& args) {
   o.noise.rangeSigma = cl.number("noise", 0.02);
   o.noise.dropout = cl.number("dropout", 0.02);
   o.scene.parked = cl.number("parked", 0.5);
+  if (const auto family = cl.value("family")) {
+    o.family = parseSceneFamily(*family);
+    if (cl.has("parked")) throw Error("option --parked", "a --family draws the parked cars; leave --parked out");
+  }
   o.mapChange = cl.number("map-change", 0.0);
   o.threads = int(cl.integer("threads", 2));
   if (!cl.has("quiet")) o.progress = [bar = std::make_shared<ProgressBar>("sim")](size_t d, size_t t) { (*bar)(d, t); };

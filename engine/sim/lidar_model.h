@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,12 @@ struct LidarUnit {
   std::vector<double> elevations;   // radians in the sensor frame, one per laser
   int firstLaserNumber = 0;         // laser_number of elevations[0]
   double startAzimuth = 0.0;        // ego-frame azimuth (radians) of the first firing
+  // How the real sensor differs from what it believes (egoTSensor, the calibration written,
+  // and elevations): none when empty / unset.
+  std::vector<double> elevationErrors;  // radians the lasers really fire above `elevations`
+  std::vector<double> rangeBiases;      // metres every range of a laser is too long
+  std::optional<SE3> trueEgoTSensor;    // the mounting the rays really leave from
+  bool ideal() const { return elevationErrors.empty() && rangeBiases.empty() && !trueEgoTSensor; }
 };
 
 // The sensor of an Argoverse 2 vehicle: two stacked 32-beam lidars spinning at 10 Hz in the
@@ -30,7 +37,7 @@ struct LidarModel {
   // Time of column `c` after the sweep timestamp.
   int64_t columnOffsetNs(int c) const { return periodNs * c / azimuthSteps; }
   size_t beamCount() const;
-  SensorCalibration calibration() const;  // sensor name -> ego_T_sensor
+  SensorCalibration calibration() const;  // sensor name -> ego_T_sensor (what the sensor believes)
 };
 
 // 64 beams at the non-uniform elevations of a 32-beam automotive lidar (-25..+15 degrees,

@@ -45,6 +45,7 @@ std::string logIdFor(const SimulationOptions& o, const std::string& source) {
   key.precision(17);
   key << "hdprior-sim-v1|" << source << '|' << o.seconds << '|' << o.seed << '|' << int(o.trajectory) << '|'
       << o.noise.rangeSigma << '|' << o.noise.dropout << '|' << o.scene.parked << '|' << o.mapChange;
+  if (o.family) key << "|family " << familyName(*o.family);  // only then: ids without a family stay
   const uint64_t a = hashText(key.str(), 1), b = hashText(key.str(), 2);
   char buf[40];
   std::snprintf(buf, sizeof buf, "%08x-%04x-4%03x-%04x-%012llx", unsigned(a >> 32), unsigned((a >> 16) & 0xffff),
@@ -83,10 +84,10 @@ struct World {
   std::unique_ptr<ArgoverseLog> log;
 };
 
-World loadWorld(const SimulationOptions& o) {
+World loadWorld(const SimulationOptions& o, const TownOptions& town) {
   World w;
   if (o.townSeed) {
-    w.town = generateTown(o.town, *o.townSeed);
+    w.town = generateTown(town, *o.townSeed);
     w.map = w.town->vectorMap;
     w.ground = GroundHeight::fromNpy(w.town->groundHeight, w.town->imgSim2City, "town");
     w.source = "town " + std::to_string(*o.townSeed);
@@ -143,7 +144,12 @@ SimulationResult simulateLog(const SimulationOptions& o) {
         "real needs a real log (--map LOG)");
   check(!o.outDir.empty(), "--out", "missing output folder");
 
-  const World world = loadWorld(o);
+  const SceneVariation variation = o.family ? drawSceneVariation(*o.family, o.seed) : SceneVariation{};
+  TownOptions townOptions = o.town;
+  SceneOptions sceneOptions = o.scene;
+  variation.applyTo(townOptions);
+  variation.applyTo(sceneOptions);
+  const World world = loadWorld(o, townOptions);
   // Output folder first (fails fast when it cannot be written), under a temporary name.
   const std::string source = o.townSeed ? world.source : world.log->id();
   const std::string logId = logIdFor(o, source);
@@ -158,7 +164,8 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   makeDirs(temp.path / "calibration");
 
   const LaneGraph lanes(world.map, {}, world.source);
-  const LidarModel lidar = argoverseLikeLidar();
+  LidarModel lidar = argoverseLikeLidar();
+  variation.applyTo(lidar);  // errors to ray-cast with; its calibration() is the one written
 
   // The drive.
   PoseTrajectory cityTEgo;
@@ -178,11 +185,13 @@ SimulationResult simulateLog(const SimulationOptions& o) {
 
   std::vector<Eigen::Vector2d> path;
   for (const SE3& p : cityTEgo.poses()) path.push_back(p.translation().head<2>());
-  const Scene scene = buildScene(world.map, world.ground, lanes, path, cityTEgo.startNs(), o.scene, o.seed, world.source);
+  const Scene scene =
+      buildScene(world.map, world.ground, lanes, path, cityTEgo.startNs(), sceneOptions, o.seed, world.source);
   const ChangedMap written = changeDrivableAreas(world.map, o.mapChange, o.seed);
 
   writeMap(world, written.map, o.mapChange > 0.0, temp.path, logId);
   if (o.mapChange > 0.0) writeFileAtomically(temp.path / "map_change.json", mapChangesToJson(o.mapChange, written.changes));
+  if (o.family) writeFileAtomically(temp.path / "scene_variation.json", sceneVariationToJson(variation));
   writeEgoPoses(temp.path / "city_SE3_egovehicle.feather", cityTEgo);
   writeSensorCalibration(temp.path / "calibration" / "egovehicle_SE3_sensor.feather", lidar.calibration());
 

@@ -155,31 +155,47 @@ std::optional<RayHit> castRayObjects(const Scene& scene, std::span<const SceneBo
 std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
                                     double maxRange) {
   const double horiz = dir.head<2>().norm();
+  // Bounds of how fast the height above the surface can fall along the ray: anywhere, above the
+  // envelope (the ground plus the highest rise), and on the road (where steps stop at the kerb).
   const double lipschitz = std::abs(dir.z()) + scene.maxSlope() * horiz;
-  constexpr double kMaxCurb = 0.2;  // Scene::curbHeight never exceeds it
-  // Height of the ray above the surface at t; also reports the boundary distance there.
-  const auto above = [&](double t, double& boundary) {
+  const double envelopeLipschitz = std::abs(dir.z()) + scene.groundSlope() * horiz;
+  const double roadLipschitz = std::abs(dir.z()) + scene.roadSlope() * horiz;
+  // The physical kerb's distance field is not quite 1-Lipschitz where a roadside moves it.
+  const double kerbReach = scene.roadside() ? 1.0 / 1.15 : 1.0;
+  const double maxRise = scene.maxRise();  // the surface never rises more above the ground (0.2 m curbs)
+  const bool roadside = scene.roadside() != nullptr;
+  // Height of the ray above the surface at t, where the ground height is g; also reports the
+  // boundary distance there.
+  const auto aboveOver = [&](double t, double g, double& boundary) {
     const Eigen::Vector3d p = origin + t * dir;
     const Eigen::Vector2d xy = p.head<2>();
+    if (roadside) {
+      const Scene::SurfacePoint s = scene.surfacePoint(xy);
+      boundary = s.boundary;
+      return p.z() - g - s.rise;
+    }
     boundary = scene.boundaryDistance(xy);
-    const double g = scene.groundHeight(xy);
     return boundary < 0.0 ? p.z() - g : p.z() - g - scene.curbHeight(xy);
+  };
+  const auto above = [&](double t, double& boundary) {
+    return aboveOver(t, scene.groundHeight((origin + t * dir).head<2>()), boundary);
   };
   double t = 0.0, boundary = 0.0, tPrev = 0.0;
   if (above(t, boundary) <= 0.0) return std::nullopt;  // origin under the ground
   while (true) {
     const Eigen::Vector3d p = origin + t * dir;
     // Far above the highest the surface can be here: a cheap step on the ground alone.
-    const double overEnvelope = p.z() - scene.groundHeight(p.head<2>()) - kMaxCurb;
+    const double ground = scene.groundHeight(p.head<2>());
+    const double overEnvelope = p.z() - ground - maxRise;
     double step;
     if (overEnvelope > 0.05) {
-      step = overEnvelope / lipschitz;
+      step = overEnvelope / envelopeLipschitz;
     } else {
-      const double h = above(t, boundary);
+      const double h = aboveOver(t, ground, boundary);
       if (h <= 0.0) break;
       // A step that cannot cross the surface, nor run into a curb while within its height.
-      step = h / lipschitz;
-      if (boundary < 0.0 && horiz > 1e-9) step = std::min(step, std::max(-boundary, 0.02) / horiz);
+      step = h / (boundary < 0.0 ? roadLipschitz : lipschitz);
+      if (boundary < 0.0 && horiz > 1e-9) step = std::min(step, std::max(-boundary * kerbReach, 0.02) / horiz);
     }
     // Moving up faster than the surface can rise: no hit.
     if (dir.z() > scene.maxSlope() * horiz) return std::nullopt;
@@ -200,18 +216,13 @@ std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& o
   above(b, hitBoundary);
   RayHit hit;
   hit.range = b;
-  const bool curbFace = prevBoundary < 0.0 && hitBoundary >= 0.0 && hPrev > 0.0 && hPrev < kMaxCurb + 0.05 &&
+  const bool curbFace = prevBoundary < 0.0 && hitBoundary >= 0.0 && hPrev > 0.0 && hPrev < maxRise + 0.05 &&
                         b - a < 0.05;
-  if (hitBoundary < 0.0) {
-    hit.label = PointLabel::Road;
-    hit.reflectivity = 12;
-  } else if (hitBoundary < scene.sidewalkWidth()) {
-    hit.label = PointLabel::SidewalkCurb;
-    hit.reflectivity = 30;
-  } else {
-    hit.label = PointLabel::OtherGround;
-    hit.reflectivity = 22;
-  }
+  const double sidewalk = roadside ? scene.sidewalkWidthAt((origin + b * dir).head<2>()) : scene.sidewalkWidth();
+  hit.label = hitBoundary < 0.0        ? PointLabel::Road
+              : hitBoundary < sidewalk ? PointLabel::SidewalkCurb
+                                       : PointLabel::OtherGround;
+  hit.reflectivity = scene.reflectivity(hit.label);
   hit.cosIncidence = curbFace ? horiz : std::abs(dir.z());
   return hit;
 }

@@ -27,6 +27,7 @@ Scene::Scene(GridGeometry groundGrid, std::vector<float> groundHeights, Boundary
   // Capped: float16 steps and fill seams make single pixel pairs look steep; a ray that
   // overshoots such a spot is still caught one step later and refined by bisection.
   maxSlope_ = std::clamp(std::sqrt(2.0) * slope / groundGrid_.resolution + 0.01, 0.02, 0.25);
+  groundSlope_ = roadSlope_ = maxSlope_;
 }
 
 double Scene::groundHeight(const Eigen::Vector2d& city) const {
@@ -43,18 +44,53 @@ double Scene::groundHeight(const Eigen::Vector2d& city) const {
   return (1 - fy) * ((1 - fx) * a + fx * b) + fy * ((1 - fx) * c + fx * d);
 }
 
-double Scene::boundaryDistance(const Eigen::Vector2d& city) const {
+void Scene::setRoadside(Roadside roadside) {
+  roadSlope_ = std::min(groundSlope_ + roadside.roadSlope(), 0.4);
+  maxSlope_ = std::min(groundSlope_ + roadside.maxSlope(), 0.4);
+  maxRise_ = roadside.maxRise();
+  roadside_ = std::move(roadside);
+}
+
+double Scene::mapBoundaryDistance(const Eigen::Vector2d& city) const {
   const double d = curb_.distance(city);
   return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
 }
 
+double Scene::boundaryDistance(const Eigen::Vector2d& city) const {
+  const double d = mapBoundaryDistance(city);
+  if (!roadside_ || std::isinf(d)) return d;
+  return Roadside::physicalDistance(d, roadside_->at(city));
+}
+
 double Scene::curbHeight(const Eigen::Vector2d& city) const {
+  if (roadside_) return roadside_->at(city).kerbHeight;
   return 0.15 + 0.05 * std::sin(city.x() / 37.0 + curbPhase_[0]) * std::cos(city.y() / 41.0 + curbPhase_[1]);
+}
+
+Scene::SurfacePoint Scene::surfacePoint(const Eigen::Vector2d& city) const {
+  const double d = mapBoundaryDistance(city);
+  if (!roadside_) return {d, d < 0.0 ? 0.0 : curbHeight(city), sidewalkWidth_};
+  const Roadside::Sample s = roadside_->at(city);
+  const double boundary = std::isinf(d) ? d : Roadside::physicalDistance(d, s);
+  return {boundary, std::isinf(boundary) ? 0.0 : roadside_->rise(boundary, s), double(s.sidewalkWidth)};
 }
 
 double Scene::surfaceHeight(const Eigen::Vector2d& city) const {
   const double g = groundHeight(city);
+  if (roadside_) return g + surfacePoint(city).rise;
   return boundaryDistance(city) < 0.0 ? g : g + curbHeight(city);
+}
+
+double Scene::sidewalkWidthAt(const Eigen::Vector2d& city) const {
+  return roadside_ ? double(roadside_->at(city).sidewalkWidth) : sidewalkWidth_;
+}
+
+uint8_t Scene::reflectivity(PointLabel label) const {
+  const RoadsideOptions standard;
+  const RoadsideOptions& o = roadside_ ? roadside_->options() : standard;
+  return label == PointLabel::Road ? o.roadReflectivity
+         : label == PointLabel::SidewalkCurb ? o.sidewalkReflectivity
+                                             : o.terrainReflectivity;
 }
 
 std::optional<Eigen::Vector2d> MovingCar::centreAt(int64_t tNs) const {

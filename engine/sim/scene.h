@@ -8,6 +8,7 @@
 
 #include "engine/map/boundary_distance.h"
 #include "engine/map/grid_geometry.h"
+#include "engine/sim/roadside.h"
 
 namespace hdprior {
 
@@ -53,16 +54,39 @@ class Scene {
   Scene(GridGeometry groundGrid, std::vector<float> groundHeights, BoundaryDistance curbDistance,
         double sidewalkWidth, uint64_t seed);
 
+  // The physical roadside of a scene family (kerb shapes and gaps, gutters, camber, sloped
+  // sidewalks, islands, the kerb displaced from the map); without one, today's kerbs: a
+  // vertical step of curbHeight() at the map's boundary, flat road and sidewalks.
+  void setRoadside(Roadside roadside);
+  const Roadside* roadside() const { return roadside_ ? &*roadside_ : nullptr; }
+
   double groundHeight(const Eigen::Vector2d& city) const;  // bilinear, clamped at the border
-  // Signed distance to the drivable boundary; +infinity outside its grid.
+  // Signed distance to the physical kerb (the map's drivable boundary unless a roadside moves
+  // it or adds islands); +infinity outside its grid.
   double boundaryDistance(const Eigen::Vector2d& city) const;
-  // Curb height (0.10..0.20 m, varying smoothly along the streets).
+  // Signed distance to the map's drivable boundary; +infinity outside its grid.
+  double mapBoundaryDistance(const Eigen::Vector2d& city) const;
+  // Curb height (without a roadside 0.10..0.20 m, varying smoothly along the streets).
   double curbHeight(const Eigen::Vector2d& city) const;
-  // Ground plus curb where the point is off the road.
+  // The surface at a point: distance to the physical kerb, height above the ground height,
+  // and the sidewalk's width there.
+  struct SurfacePoint {
+    double boundary = 0.0, rise = 0.0, sidewalkWidth = 0.0;
+  };
+  SurfacePoint surfacePoint(const Eigen::Vector2d& city) const;
+  // Ground plus curb where the point is off the road (plus the roadside's profile).
   double surfaceHeight(const Eigen::Vector2d& city) const;
   double sidewalkWidth() const { return sidewalkWidth_; }
-  // Bound of |grad surfaceHeight| used by the ray marcher.
+  double sidewalkWidthAt(const Eigen::Vector2d& city) const;
+  // Bounds of |grad surfaceHeight| used by the ray marcher (away from kerbs and gutters):
+  // anywhere, of the ground height alone, and on the road. Without a roadside all the same.
   double maxSlope() const { return maxSlope_; }
+  double groundSlope() const { return groundSlope_; }
+  double roadSlope() const { return roadSlope_; }
+  // Bound of surfaceHeight - groundHeight (0.2 m without a roadside).
+  double maxRise() const { return maxRise_; }
+  // Of the road, the sidewalks and the ground beyond.
+  uint8_t reflectivity(PointLabel label) const;
   const GridGeometry& groundGrid() const { return groundGrid_; }
 
   void addBox(const SceneBox& box) { boxes_.push_back(box); }
@@ -93,7 +117,8 @@ class Scene {
   std::vector<float> heights_;
   BoundaryDistance curb_;
   double sidewalkWidth_;
-  double maxSlope_ = 0.1;
+  double maxSlope_ = 0.1, groundSlope_ = 0.1, roadSlope_ = 0.1, maxRise_ = 0.2;
+  std::optional<Roadside> roadside_;
   double curbPhase_[2] = {0.0, 0.0};
   std::vector<SceneBox> boxes_;
   std::vector<Eigen::Vector2d> boxAxes_;

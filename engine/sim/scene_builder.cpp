@@ -10,6 +10,7 @@
 #include "engine/error.h"
 #include "engine/map/boundary_distance.h"
 #include "engine/map/drivable_raster.h"
+#include "engine/sim/traffic_islands.h"
 
 namespace hdprior {
 namespace {
@@ -213,6 +214,44 @@ struct Placer {
   }
 };
 
+// Bushes and hedges on the sidewalks and the verge beyond, low planters on wide islands.
+void placeVegetation(Scene& scene, const DrivableRaster& raster, const Region& region,
+                     std::span<const TrafficIsland> islands, double density, Placer& placer) {
+  for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 7.0)) {
+    const bool want = placer.chance(density), hedge = placer.chance(0.4);
+    if (!want) continue;
+    const double sidewalk = scene.sidewalkWidthAt(p);
+    const Vec2 axis(-n.y(), n.x());
+    if (hedge) {
+      const Vec2 half(placer.uniform(1.5, 5.0), placer.uniform(0.3, 0.6));
+      const Vec2 centre = p + n * (sidewalk + half.y() + placer.uniform(0.0, 1.5));
+      const auto fp = footprint(centre, axis, half, 0.5);
+      const double height = placer.uniform(0.6, 1.5);
+      if (placer.minBoundary(fp) < 0.5 || !placer.clearOfEgo(fp, 2.5) || !placer.occupancy.free(fp)) continue;
+      placer.occupancy.mark(fp);
+      const double z = placer.minGround(fp);
+      scene.addBox({centre, std::atan2(axis.y(), axis.x()), half, z - 0.1, z + height, uint8_t(placer.uniform(20, 45))});
+    } else {
+      const double radius = placer.uniform(0.4, 1.0), height = placer.uniform(0.5, 1.5);
+      const Vec2 centre = p + n * placer.uniform(std::max(1.0, 0.5 * sidewalk), sidewalk + 3.0);
+      const auto fp = footprint(centre, Vec2(1, 0), Vec2(radius, radius), 0.5);
+      if (placer.minBoundary(fp) < 0.3 || !placer.clearOfEgo(fp, 2.5) || !placer.occupancy.free(fp)) continue;
+      placer.occupancy.mark(fp);
+      const double z = scene.surfaceHeight(centre);
+      scene.addCylinder({centre, radius, z - 0.1, z + height, uint8_t(placer.uniform(20, 45))});
+    }
+  }
+  for (const TrafficIsland& t : islands) {
+    const bool want = placer.chance(density);
+    if (!want || t.radius < 0.7) continue;
+    const Vec2 axis = (t.b - t.a).normalized(), centre = 0.5 * (t.a + t.b);
+    const Vec2 half(0.5 * (t.b - t.a).norm(), t.radius - 0.3);
+    const double z = scene.surfaceHeight(centre);
+    scene.addBox({centre, std::atan2(axis.y(), axis.x()), half, z - 0.1, z + placer.uniform(0.3, 0.9),
+                  uint8_t(placer.uniform(20, 45))});
+  }
+}
+
 }  // namespace
 
 Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneGraph& lanes,
@@ -234,14 +273,30 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   ro.margin = std::max(10.0, 2 * options.rasterResolution);
   const DrivableRaster raster = DrivableRaster::build(cropped, ro, source);
   auto [grid, heights] = groundGrid(ground, region);
-  Scene scene(grid, std::move(heights), BoundaryDistance::build(raster), options.sidewalkWidth, seed);
-
-  std::mt19937_64 rng(seed ^ 0x5ce4e5eedULL);
   // Sparse ego path samples (every ~2 m) for clearance checks.
   std::vector<Vec2> path;
   for (const Vec2& p : egoPath)
     if (path.empty() || (p - path.back()).norm() > 2.0) path.push_back(p);
+  BoundaryDistance mapDistance = BoundaryDistance::build(raster);
+  std::vector<TrafficIsland> islands;
+  if (options.roadside)
+    islands = placeTrafficIslands(mapDistance, lanes, path, region.lo, region.hi, options.islandDensity, seed);
+  Scene scene(grid, std::move(heights), std::move(mapDistance), options.sidewalkWidth, seed);
+  if (options.roadside)
+    scene.setRoadside(Roadside::build(*options.roadside, region.lo, region.hi, raster.boundaryPoints(), islands, seed));
+
+  std::mt19937_64 rng(seed ^ 0x5ce4e5eedULL);
   Placer placer{scene, path, rng};
+  // Scene families draw from their own generator, so the default scene stays as it was.
+  std::mt19937_64 familyRng(seed ^ 0xfa3117ULL);
+  const double densityAngle = std::uniform_real_distribution<double>(0.0, 6.283185307179586)(familyRng);
+  const double densityPhase = std::uniform_real_distribution<double>(0.0, 6.283185307179586)(familyRng);
+  const Vec2 densityK = Vec2(std::cos(densityAngle), std::sin(densityAngle)) * (6.283185307179586 / 350.0);
+  const auto buildingDensityAt = [&](const Vec2& p) {
+    if (options.buildingDensityVariation <= 0.0) return options.buildingDensity;
+    const double swing = options.buildingDensityVariation * std::sin(densityK.dot(p) + densityPhase);
+    return std::clamp(options.buildingDensity * (1.0 + swing), 0.0, 1.0);
+  };
 
   // Junctions (intersection lanes, 4 m cells): no parking there.
   std::unordered_set<int64_t> junction;
@@ -298,21 +353,27 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
 
   // Buildings: facades parallel to the curb, behind the sidewalk at varying setbacks, with gaps.
   for (const auto& [p, n] : spacedCurbPoints(raster, scene, region, 14.0)) {
-    const bool want = placer.chance(options.buildingDensity);
+    const bool want = placer.chance(buildingDensityAt(p));
     if (!want) continue;
 
     const Vec2 axis(-n.y(), n.x());
     const Vec2 half(placer.uniform(5.0, 14.0), placer.uniform(4.0, 9.0));
-    const double setback = options.sidewalkWidth - 0.5 + placer.uniform(0.0, 6.0);
+    const double sidewalk = scene.sidewalkWidthAt(p);
+    const double setback = sidewalk - 0.5 + placer.uniform(0.0, 6.0);
     const Vec2 centre = p + n * (setback + half.y());
     const auto fp = footprint(centre, axis, half, 1.0);
-    if (placer.minBoundary(fp) < options.sidewalkWidth - 1.0 || !placer.clearOfEgo(fp, 5.0) ||
+    if (placer.minBoundary(fp) < sidewalk - 1.0 || !placer.clearOfEgo(fp, 5.0) ||
         !placer.occupancy.free(fp))
       continue;
     placer.occupancy.mark(fp);
     const double z = placer.minGround(fp) - 1.0;
     const double top = placer.maxGround(fp) + placer.uniform(4.0, 24.0);
     scene.addBox({centre, std::atan2(axis.y(), axis.x()), half, z, top, uint8_t(placer.uniform(30, 90))});
+  }
+
+  if (options.vegetationDensity > 0.0) {
+    Placer family{scene, path, familyRng, placer.occupancy};
+    placeVegetation(scene, raster, region, islands, options.vegetationDensity, family);
   }
 
   // Moving cars on random lane routes.

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include <Eigen/Core>
@@ -20,12 +21,18 @@ struct SceneOptions {
   double treeDensity = 0.35;       // fraction of sidewalk slots with a tree
   double poleSpacing = 30.0;       // metres between poles along a curb
   int movingCars = 30;
+  // Scene families (engine/sim/scene_variation.h); the defaults leave today's scenes as they were.
+  double buildingDensityVariation = 0.0;  // the density swings by up to this fraction of itself (open stretches)
+  double vegetationDensity = 0.0;  // fraction of sidewalk slots with a bush or hedge (and island planters)
+  double islandDensity = 0.0;      // of candidate spots for a traffic island (needs a roadside)
+  std::optional<RoadsideOptions> roadside;  // physical kerbs, sidewalks, map error; nullopt: plain kerbs
 };
 
 // Builds the world around a drive: the ground from the map's ground height (NaN filled
 // from the nearest valid pixel), curbs along the drivable area's boundary, and objects
 // placed along it, none within 2.5 m of `egoPath` (so the ego vehicle never drives through
-// them). Deterministic in `seed`. Throws Error(source, ...) if no drivable area is near.
+// them). With options.roadside, the kerbs are shaped (and moved off the map) by it and traffic
+// islands are raised inside wide drivable areas. Deterministic in `seed`. Throws Error(source, ...) if no drivable area is near.
 Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneGraph& lanes,
                  std::span<const Eigen::Vector2d> egoPath, int64_t startNs, const SceneOptions& options,
                  uint64_t seed, const std::string& source);

@@ -8,6 +8,58 @@
 #include "engine/sim/ray_caster.h"
 
 namespace hdprior {
+namespace {
+
+double azimuthOf(const LidarModel& lidar, const LidarUnit& unit, int column) {
+  // Both units turn clockwise seen from above in the ego frame; an upside-down unit
+  // therefore turns the other way in its own frame.
+  const double egoAzimuth = unit.startAzimuth - 2.0 * std::numbers::pi * column / lidar.azimuthSteps;
+  return unit.egoTSensor.linear()(2, 2) < 0.0 ? -egoAzimuth : egoAzimuth;
+}
+
+void addPoint(const Eigen::Vector3d& egoPoint, const RayHit& hit, double speckle, int laserNumber, int64_t offset,
+              SimulatedSweep& out) {
+  LidarPoint pt;
+  pt.x = float(egoPoint.x());
+  pt.y = float(egoPoint.y());
+  pt.z = float(egoPoint.z());
+  const double intensity = hit.reflectivity * (0.35 + 0.65 * hit.cosIncidence) * (0.8 + 0.4 * speckle);
+  pt.intensity = uint8_t(std::clamp(intensity, 0.0, 255.0));
+  pt.laserNumber = uint8_t(laserNumber);
+  pt.offsetNs = int32_t(offset);
+  out.sweep.points.push_back(pt);
+  out.labels.push_back(uint8_t(hit.label));
+}
+
+// One column of a sensor that is not what it believes: the rays leave from its true mounting
+// at its true elevations and ranges are biased, but the points are placed the way the sensor
+// would place them: the measured range along the believed beam, through the believed
+// calibration (what Argoverse 2 stores).
+void castImperfectColumn(const Scene& scene, std::span<const SceneBox> moving, const LidarModel& lidar,
+                         const LidarUnit& unit, int column, const SE3& cityTEgoNow, const SE3& egoAtSweepTCity,
+                         const SweepNoise& noise, std::mt19937_64& rng, std::normal_distribution<double>& rangeNoise,
+                         std::uniform_real_distribution<double>& uniform, SimulatedSweep& out) {
+  const SE3 cityTTrue = cityTEgoNow * unit.trueEgoTSensor.value_or(unit.egoTSensor);
+  const SE3 egoAtSweepTBelieved = egoAtSweepTCity * cityTEgoNow * unit.egoTSensor;
+  const double azimuth = azimuthOf(lidar, unit, column);
+  const double ca = std::cos(azimuth), sa = std::sin(azimuth);
+  const int64_t offset = lidar.columnOffsetNs(column);
+  for (size_t l = 0; l < unit.elevations.size(); ++l) {
+    const double believed = unit.elevations[l];
+    const double real = believed + (l < unit.elevationErrors.size() ? unit.elevationErrors[l] : 0.0);
+    const Eigen::Vector3d trueDir =
+        cityTTrue.linear() * Eigen::Vector3d(std::cos(real) * ca, std::cos(real) * sa, std::sin(real));
+    const auto hit = castRay(scene, moving, cityTTrue.translation(), trueDir, lidar.maxRange);
+    const double drop = uniform(rng), n = rangeNoise(rng), speckle = uniform(rng);
+    if (!hit || drop < noise.dropout || hit->range < lidar.minRange) continue;
+    const double bias = l < unit.rangeBiases.size() ? unit.rangeBiases[l] : 0.0;
+    const double range = hit->range + bias + noise.rangeSigma * n;
+    const Eigen::Vector3d beam(std::cos(believed) * ca, std::cos(believed) * sa, std::sin(believed));
+    addPoint(egoAtSweepTBelieved * (range * beam), *hit, speckle, unit.firstLaserNumber + int(l), offset, out);
+  }
+}
+
+}  // namespace
 
 SimulatedSweep simulateSweep(const Scene& scene, const LidarModel& lidar, const PoseTrajectory& cityTEgo,
                              int64_t sweepNs, const SweepNoise& noise, uint64_t seed) {
@@ -28,13 +80,15 @@ SimulatedSweep simulateSweep(const Scene& scene, const LidarModel& lidar, const 
     const int64_t offset = lidar.columnOffsetNs(c);
     const SE3 cityTEgoNow = cityTEgo.at(sweepNs + offset);
     for (const LidarUnit& unit_ : lidar.units) {
+      if (!unit_.ideal()) {
+        castImperfectColumn(scene, moving, lidar, unit_, c, cityTEgoNow, egoAtSweepTCity, noise, rng, rangeNoise, unit,
+                            out);
+        continue;
+      }
       const SE3 cityTSensor = cityTEgoNow * unit_.egoTSensor;
       const Eigen::Vector3d origin = cityTSensor.translation();
       const Eigen::Matrix3d R = cityTSensor.linear();
-      // Both units turn clockwise seen from above in the ego frame; an upside-down unit
-      // therefore turns the other way in its own frame.
-      const double egoAzimuth = unit_.startAzimuth - 2.0 * std::numbers::pi * c / lidar.azimuthSteps;
-      const double azimuth = unit_.egoTSensor.linear()(2, 2) < 0.0 ? -egoAzimuth : egoAzimuth;
+      const double azimuth = azimuthOf(lidar, unit_, c);
       const double ca = std::cos(azimuth), sa = std::sin(azimuth);
       for (size_t l = 0; l < unit_.elevations.size(); ++l) {
         const double el = unit_.elevations[l];
@@ -44,17 +98,7 @@ SimulatedSweep simulateSweep(const Scene& scene, const LidarModel& lidar, const 
         const double drop = unit(rng), n = rangeNoise(rng), speckle = unit(rng);
         if (!hit || drop < noise.dropout || hit->range < lidar.minRange) continue;
         const double range = hit->range + noise.rangeSigma * n;
-        const Eigen::Vector3d p = egoAtSweepTCity * (origin + range * dir);
-        LidarPoint pt;
-        pt.x = float(p.x());
-        pt.y = float(p.y());
-        pt.z = float(p.z());
-        const double intensity = hit->reflectivity * (0.35 + 0.65 * hit->cosIncidence) * (0.8 + 0.4 * speckle);
-        pt.intensity = uint8_t(std::clamp(intensity, 0.0, 255.0));
-        pt.laserNumber = uint8_t(unit_.firstLaserNumber + int(l));
-        pt.offsetNs = int32_t(offset);
-        out.sweep.points.push_back(pt);
-        out.labels.push_back(uint8_t(hit->label));
+        addPoint(egoAtSweepTCity * (origin + range * dir), *hit, speckle, unit_.firstLaserNumber + int(l), offset, out);
       }
     }
   }

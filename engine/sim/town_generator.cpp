@@ -153,7 +153,7 @@ void buildNetwork(const TownOptions& o, std::mt19937_64& rng, TownMap& town) {
     s.from = a;
     s.to = b;
     s.width = std::round(width * 2.0) / 2.0;
-    s.lanesPerDirection = s.width >= o.twoLaneWidth ? 2 : 1;
+    s.lanesPerDirection = s.width >= o.threeLaneWidth ? 3 : s.width >= o.twoLaneWidth ? 2 : 1;
     s.corridor = corridor;
     town.streets.push_back(s);
   };
@@ -239,7 +239,7 @@ void buildStreets(Builder& b) {
         if (dir.dot((o.control - at).normalized()) < -std::cos(std::numbers::pi / 4)) continue;
         widest = std::max(widest, 0.5 * o.width);
       }
-      b.armRadius[si][size_t(end)] = 1.2 * widest + 4.0;
+      b.armRadius[si][size_t(end)] = 1.2 * widest + b.options.junctionMargin;
       b.nodeRadius[size_t(node)] = std::max(b.nodeRadius[size_t(node)], b.armRadius[si][size_t(end)]);
     }
   }
@@ -445,6 +445,8 @@ TownMap generateTown(const TownOptions& o, uint64_t seed) {
   check(o.corridors >= 0 && o.corridors <= 2, "corridors must be 0..2");
   check(o.corridorLength >= 100.0, "corridorLength must be >= 100 m");
   check(o.hillGrade >= 0.0 && o.hillGrade <= 0.3, "hillGrade must be 0..0.3");
+  check(o.threeLaneWidth >= o.twoLaneWidth, "threeLaneWidth must be >= twoLaneWidth");
+  check(o.junctionMargin >= 0.0 && o.junctionMargin <= 50.0, "junctionMargin must be 0..50 m");
   check(o.groundResolution > 0.0 && o.groundRadius >= 0.0, "ground raster resolution and radius must be positive");
 
   TownMap town;

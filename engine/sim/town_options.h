@@ -13,6 +13,8 @@ struct TownOptions {
   double curvedEdgeFraction = 0.3;    // of the streets, bent as quadratic Bezier curves
   double minRoadWidth = 6.0, maxRoadWidth = 20.0;  // metres, one width per street line
   double twoLaneWidth = 11.0;         // from this road width on, two lanes per direction
+  double threeLaneWidth = 1e9;        // from this road width on, three (default: never)
+  double junctionMargin = 4.0;        // a road ends 1.2 x the widest crossing half width + this from a junction's centre
   int corridors = 2;                  // long loops without junctions on the east and north sides
   double corridorLength = 420.0;      // metres from the grid to the far side of a corridor loop
   double hillGrade = 0.08;            // steepest grade of the terrain anywhere in the town

@@ -251,6 +251,8 @@ TEST(SimCommand, BadOptionsFailWithOneLineAndLeaveNothing) {
   expectCleanFailure("sim --town 1 --noise -1" + o, out, "--noise");
   expectCleanFailure("sim --town 1 --parked 2" + o, out, "--parked");
   expectCleanFailure("sim --town 1 --map-change 1.5" + o, out, "--map-change");
+  expectCleanFailure("sim --town 1 --family test" + o, out, "--family");
+  expectCleanFailure("sim --town 1 --family tuning --parked 0.2" + o, out, "--parked");
   expectCleanFailure("sim --map /nonexistent/log" + o, out, "/nonexistent/log");
   // Fails after the temporary folder exists (the real log is shorter than 100 s).
   expectCleanFailure("sim --map '" + test::sharedLog().string() + "' --seconds 100" + o, out, "--seconds");

@@ -90,5 +90,38 @@ TEST(SweepSimulator, FillsLaserNumbersOffsetsAndLabelsLikeArgoverse) {
   EXPECT_FALSE(same(other.sweep, s.sweep));
 }
 
+// A sensor that is not what it believes (engine/sim/scene_variation.h): with a range bias on
+// the up lidar, each of its points moves 3 cm out along its beam; with zero errors the
+// imperfect sensor's path places every point where the ideal one does.
+TEST(SweepSimulator, RangeBiasMovesEachPointAlongItsBeam) {
+  const Scene scene = wallScene();
+  const PoseTrajectory T = driveAlongX(0.0);
+  const LidarModel ideal = argoverseLikeLidar();
+  LidarModel biased = ideal, zero = ideal;
+  biased.units[0].rangeBiases.assign(32, 0.03);
+  zero.units[0].trueEgoTSensor = zero.units[0].egoTSensor;
+  const SimulatedSweep a = simulateSweep(scene, ideal, T, kStart, SweepNoise{0.0, 0.0}, 1);
+  const SimulatedSweep b = simulateSweep(scene, biased, T, kStart, SweepNoise{0.0, 0.0}, 1);
+  const SimulatedSweep c = simulateSweep(scene, zero, T, kStart, SweepNoise{0.0, 0.0}, 1);
+  ASSERT_EQ(a.sweep.points.size(), b.sweep.points.size());
+  ASSERT_EQ(a.sweep.points.size(), c.sweep.points.size());
+  const Eigen::Vector3d up = ideal.units[0].egoTSensor.translation();
+  size_t moved = 0;
+  for (size_t i = 0; i < a.sweep.points.size(); ++i) {
+    const LidarPoint &p = a.sweep.points[i], &q = b.sweep.points[i], &r = c.sweep.points[i];
+    const Eigen::Vector3d pa(p.x, p.y, p.z), pb(q.x, q.y, q.z), pc(r.x, r.y, r.z);
+    ASSERT_EQ(p.laserNumber, q.laserNumber);
+    EXPECT_LT((pc - pa).norm(), 2e-4) << i;
+    if (p.laserNumber < 32) {
+      EXPECT_NEAR((pb - up).norm() - (pa - up).norm(), 0.03, 2e-4) << i;
+      EXPECT_NEAR((pb - pa).norm(), 0.03, 2e-4) << i;
+      ++moved;
+    } else {
+      EXPECT_LT((pb - pa).norm(), 1e-6) << i;
+    }
+  }
+  EXPECT_GT(moved, 10000u);
+}
+
 }  // namespace
 }  // namespace hdprior
