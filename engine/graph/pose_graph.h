@@ -22,6 +22,10 @@ struct PoseGraphOptions {
   // count every residual as independent and ignore the local map's own drift.
   double odometryTranslationSigma = 0.0;  // metres
   double odometryRotationSigmaDeg = 0.0;
+  // The drift model (engine/graph/odometry_information.h): standard deviations per metre travelled
+  // between the keyframes, added in quadrature to each translation / rotation axis.
+  double odometryTranslationSigmaPerM = 0.0;  // fraction of the distance
+  double odometryRotationSigmaDegPerM = 0.0;
 };
 
 struct SolveSummary {
