@@ -30,7 +30,9 @@ TEST(OdometryInformation, DriftModelAddsPerMetreSigmasInQuadrature) {
     EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2) + std::pow(0.02 * kDeg, 2), 1e-18) << i;
     EXPECT_NEAR(v[3 + i], 0.01 * 0.01 + 0.01 * 0.01, 1e-15) << i;
   }
-  EXPECT_TRUE(odometryDriftVariances(0.0, PoseGraphOptions{.odometryTranslationSigmaPerM = 0.01}).isZero());
+  PoseGraphOptions perMetreOnly;
+  perMetreOnly.odometryTranslationSigmaPerM = 0.01;
+  EXPECT_TRUE(odometryDriftVariances(0.0, perMetreOnly).isZero());
 }
 
 TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
@@ -47,8 +49,10 @@ TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
   EXPECT_NEAR(covariance(5, 5), 3e-4 + 4e-4, 1e-12);
   EXPECT_NEAR(covariance(2, 3), 1e-6, 1e-12);            // w_z with v_x
   // Without a covariance (an external trajectory), the drift model alone.
-  const Matrix6d modelOnly = odometryInformation(Matrix6d::Zero(), forward(2.0),
-                                                 {.odometryTranslationSigmaPerM = 0.01, .odometryRotationSigmaDegPerM = 0.005});
+  PoseGraphOptions model;
+  model.odometryTranslationSigmaPerM = 0.01;
+  model.odometryRotationSigmaDegPerM = 0.005;
+  const Matrix6d modelOnly = odometryInformation(Matrix6d::Zero(), forward(2.0), model);
   EXPECT_NEAR(modelOnly(4, 4), 1.0 / 4e-4, 1e-6);
   EXPECT_NEAR(modelOnly(0, 0), 1.0 / std::pow(0.01 * kDeg, 2), 1e-3);
   // Nothing at all (no covariance, no model, or not finite): weak.

@@ -164,7 +164,7 @@ TEST(OdometryDrift, OdometryReportsTheDriftButRegistersOnItsOwnEstimate) {
   SimulationOptions sim;
   sim.townSeed = 3;
   sim.seed = 2;
-  sim.seconds = 4.0;
+  sim.seconds = 3.0;
   sim.outDir = test::freshOutputDir("odometry_drift_sim");
   const ArgoverseLog log(simulateLog(sim).dir);
   OdometryOptions drifted;
@@ -184,8 +184,8 @@ TEST(OdometryDrift, OdometryReportsTheDriftButRegistersOnItsOwnEstimate) {
     EXPECT_TRUE(degraded.frames()[i].covariance == plain.frames()[i].covariance) << i;
   }
   const double travelled = plainPoses.back().translation().norm();
-  ASSERT_GT(travelled, 20.0);
-  // 1 % longer over the drive, near enough on a straight-ish 4 s drive.
+  ASSERT_GT(travelled, 15.0);
+  // 1 % longer over the drive, near enough on a straight-ish 3 s drive.
   EXPECT_NEAR(degraded.frames().back().odomTEgo.translation().norm() / travelled, 1.01, 0.002);
   ASSERT_GE(degraded.keyframes().size(), 2u);
   for (size_t k = 1; k < degraded.keyframes().size(); ++k) {
@@ -193,7 +193,9 @@ TEST(OdometryDrift, OdometryReportsTheDriftButRegistersOnItsOwnEstimate) {
     const SE3 between = degraded.frames()[degraded.keyframes()[k - 1].frame].odomTEgo.inverse() * degraded.frames()[kf.frame].odomTEgo;
     EXPECT_TRUE(kf.previousTThis.isApprox(between, 1e-12)) << k;
   }
-  EXPECT_THROW(Odometry(OdometryOptions{.drift = {0.5, 0, 0}}), Error);
+  OdometryOptions tooMuch;
+  tooMuch.drift.scale = 0.5;
+  EXPECT_THROW(Odometry{tooMuch}, Error);
 }
 
 }  // namespace hdprior
