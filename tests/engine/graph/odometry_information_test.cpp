@@ -30,8 +30,7 @@ TEST(OdometryInformation, DriftModelAddsPerMetreSigmasInQuadrature) {
     EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2) + std::pow(0.02 * kDeg, 2), 1e-18) << i;
     EXPECT_NEAR(v[3 + i], 0.01 * 0.01 + 0.01 * 0.01, 1e-15) << i;
   }
-  PoseGraphOptions perMetreOnly;
-  perMetreOnly.odometryTranslationSigmaPerM = 0.01;
+  PoseGraphOptions perMetreOnly;  // defaults: no constant floors
   EXPECT_TRUE(odometryDriftVariances(0.0, perMetreOnly).isZero());
 }
 
@@ -41,6 +40,7 @@ TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
   vw(0, 5) = vw(5, 0) = 1e-6;  // v_x with w_z
   PoseGraphOptions o;
   o.odometryTranslationSigmaPerM = 0.01;
+  o.odometryRotationSigmaDegPerM = 0.0;
   const Matrix6d information = odometryInformation(vw, forward(2.0), o);
   const Matrix6d covariance = information.inverse();
   EXPECT_NEAR(covariance(0, 0), 1e-6, 1e-12);            // rotation first
@@ -56,10 +56,21 @@ TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
   EXPECT_NEAR(modelOnly(4, 4), 1.0 / 4e-4, 1e-6);
   EXPECT_NEAR(modelOnly(0, 0), 1.0 / std::pow(0.01 * kDeg, 2), 1e-3);
   // Nothing at all (no covariance, no model, or not finite): weak.
-  EXPECT_TRUE(odometryInformation(Matrix6d::Zero(), forward(2.0), PoseGraphOptions{}).isApprox(Matrix6d::Identity() * 1e-2));
+  PoseGraphOptions noModel;
+  noModel.odometryTranslationSigmaPerM = noModel.odometryRotationSigmaDegPerM = 0.0;
+  EXPECT_TRUE(odometryInformation(Matrix6d::Zero(), forward(2.0), noModel).isApprox(Matrix6d::Identity() * 1e-2));
   Matrix6d bad = vw;
   bad(1, 1) = std::nan("");
   EXPECT_TRUE(odometryInformation(bad, forward(2.0), o).isApprox(Matrix6d::Identity() * 1e-2));
+}
+
+// The defaults describe the undrifted built-in odometry (README: measured normalised errors).
+TEST(OdometryInformation, DefaultsAreASmallDriftModel) {
+  const PoseGraphOptions o;
+  EXPECT_GT(o.odometryTranslationSigmaPerM, 0.0);
+  EXPECT_LE(o.odometryTranslationSigmaPerM, 1e-3);
+  EXPECT_GT(o.odometryRotationSigmaDegPerM, 0.0);
+  EXPECT_LE(o.odometryRotationSigmaDegPerM, 1e-3);
 }
 
 TEST(OdometryInformation, InjectedDriftWidensTheModelToCoverIt) {
