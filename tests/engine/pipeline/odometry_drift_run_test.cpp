@@ -114,7 +114,9 @@ TEST_F(OdometryDriftRun, DriftedOdometryShowsTheDriftAndIsDeterministic) {
   std::printf("drifted odometry: RPE10 %.3f %% (ground truth drifted: %.3f %%), yaw %.3f deg/100 m; ATE rmse %.3f m (%.3f m)\n",
               rpe10, expected.rpe10.translationPercent, odometry["rpe_10m"]["yaw_deg_per_100m"].get<double>(), ate,
               expected.ate.translation.rmse);
-  EXPECT_NEAR(expected.rpe10.translationPercent, 0.70, 0.02);  // scale, and a little of the yaw
+  // Scale and a little of the yaw; a segment overshoots 10 m by up to one 0.8 m step (RPE divides by 10 m).
+  EXPECT_GT(expected.rpe10.translationPercent, 0.69);
+  EXPECT_LT(expected.rpe10.translationPercent, 0.78);
   EXPECT_NEAR(rpe10, expected.rpe10.translationPercent, 0.1);   // the odometry's own: ~0.03 %
   EXPECT_NEAR(odometry["rpe_10m"]["yaw_deg_per_100m"].get<double>(), 0.5, 0.2);
   EXPECT_GT(expected.ate.translation.rmse, 0.1);
