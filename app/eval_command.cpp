@@ -110,9 +110,10 @@ render::Image rgba(const RgbImage& im) {
 }  // namespace
 
 int runEval(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "jobs"}, .flags = {"no-prior", "keep-time-budget"}, .minPositional = 1,
-                              .maxPositional = 1,
-                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--keep-time-budget]",
+  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "odometry-drift"}, .flags = {"no-prior", "keep-time-budget"},
+                              .minPositional = 1, .maxPositional = 1,
+                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--keep-time-budget] "
+                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]]",
                               .shortNames = {{'j', "jobs"}}});
   Batch batch;
   batch.out = outputFolder(cl.required("out"));

@@ -30,14 +30,20 @@ void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetr
                 m.optimized->ate.translation.rmse, m.optimized->ate.translation.max, rpeText(*m.optimized).c_str(),
                 m.matches.accepted, m.matches.degenerate, m.matches.rejected);
   }
+  if (run.odometryDrift.active()) {
+    std::printf("; injected odometry drift: scale %g, yaw %g deg/100 m, pitch %g deg/100 m", run.odometryDrift.scale,
+                run.odometryDrift.yawDegPer100m, run.odometryDrift.pitchDegPer100m);
+  }
   std::printf("; wrote %s\n", out.string().c_str());
 }
 
 }  // namespace
 
 int runRun(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config"}, .flags = {"no-prior"}, .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior run LOG --out DIR [--no-prior] [--config FILE]"});
+  const CommandLine cl(args, {.valued = {"out", "config", "odometry-drift"}, .flags = {"no-prior"}, .minPositional = 1,
+                              .maxPositional = 1,
+                              .usage = "hdprior run LOG --out DIR [--no-prior] [--config FILE] "
+                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]]"});
   const std::filesystem::path out = outputFolder(cl.required("out"));
   const Config config = configOption(cl);
   const ArgoverseLog log(cl.positional()[0]);

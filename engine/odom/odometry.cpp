@@ -41,16 +41,23 @@ Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyfra
   if (options_.deskew.mode != "none" && options_.deskew.mode != "constant_velocity") {
     throw Error("odometry.deskew.mode", "must be \"none\" or \"constant_velocity\", not \"" + options_.deskew.mode + "\"");
   }
+  if (const std::string problem = odometryDriftProblem(options_.drift); !problem.empty()) throw Error("odometry.drift", problem);
 }
 
 // Motion over one sweep period from the last two estimates (constant velocity); identity at start.
 SE3 Odometry::predictedMotion(int64_t timestampNs, double& periodNs) const {
   periodNs = frames_.empty() ? kDefaultPeriodNs : frames_.back().periodNs;
   if (frames_.size() < 2) return SE3::Identity();
-  const OdometryFrame& a = frames_[frames_.size() - 2];
-  const OdometryFrame& b = frames_.back();
-  periodNs = double(b.timestampNs - a.timestampNs);
-  return a.odomTEgo.inverse() * b.odomTEgo;
+  const size_t a = frames_.size() - 2, b = frames_.size() - 1;
+  periodNs = double(frames_[b].timestampNs - frames_[a].timestampNs);
+  return registered_[a].inverse() * registered_[b];
+}
+
+// The pose the frame reports: the registered one, or with drift the previous reported pose times the
+// degraded registered motion since the previous frame.
+SE3 Odometry::reportedPose(const SE3& registered) const {
+  if (frames_.empty() || !options_.drift.active()) return registered;
+  return frames_.back().odomTEgo * driftedStep(registered_.back().inverse() * registered, options_.drift);
 }
 
 std::vector<Eigen::Vector3f> Odometry::deskewed(const LidarSweep& sweep, size_t frame) const {
@@ -78,33 +85,34 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
   };
   std::vector<Eigen::Vector3f> edges, planes;
   featuresFor(frame.sweepMotion, edges, planes);
+  SE3 registered = SE3::Identity();
 
   if (!frames_.empty()) {
-    const OdometryFrame& previous = frames_.back();
-    const double sinceLast = double(sweep.timestampNs - previous.timestampNs);
-    SE3 guess = previous.odomTEgo * scaleMotion(frame.sweepMotion, sinceLast / frame.periodNs);
+    const SE3& previous = registered_.back();
+    const double sinceLast = double(sweep.timestampNs - frames_.back().timestampNs);
+    SE3 guess = previous * scaleMotion(frame.sweepMotion, sinceLast / frame.periodNs);
     if (ro.scanToScanGuess && !lastEdges_.empty()) {
       guess = registerFeatures(edges, planes, lastEdges_, lastPlanes_, guess, ro).mapTEgo;
     }
     RegistrationResult r = registerFeatures(edges, planes, edgeMap_, planeMap_, guess, startRegistration(ro, frames_.size()));
     if (deskew) {
       // Re-deskew with the estimated motion and refine once from the estimate.
-      frame.sweepMotion = scaleMotion(previous.odomTEgo.inverse() * r.mapTEgo, frame.periodNs / sinceLast);
+      frame.sweepMotion = scaleMotion(previous.inverse() * r.mapTEgo, frame.periodNs / sinceLast);
       featuresFor(frame.sweepMotion, edges, planes);
       RegistrationOptions refine = ro;
       refine.outerIterations = 1;
       r = registerFeatures(edges, planes, edgeMap_, planeMap_, r.mapTEgo, refine);
     }
-    frame.odomTEgo = r.mapTEgo;
+    registered = r.mapTEgo;
     frame.covariance = r.covariance;
     frame.edgeResiduals = r.edgeResiduals;
     frame.planeResiduals = r.planeResiduals;
   }
 
-  const auto edgesInMap = transformed(edges, frame.odomTEgo), planesInMap = transformed(planes, frame.odomTEgo);
+  const auto edgesInMap = transformed(edges, registered), planesInMap = transformed(planes, registered);
   edgeMap_.add(edgesInMap);
   planeMap_.add(planesInMap);
-  const Eigen::Vector3f centre = frame.odomTEgo.translation().cast<float>();
+  const Eigen::Vector3f centre = registered.translation().cast<float>();
   edgeMap_.removeFarFrom(centre);
   planeMap_.removeFarFrom(centre);
   if (ro.scanToScanGuess) {
@@ -113,7 +121,9 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
     lastEdges_.add(edgesInMap);
     lastPlanes_.add(planesInMap);
   }
+  frame.odomTEgo = reportedPose(registered);
   frames_.push_back(frame);
+  registered_.push_back(registered);
   updateKeyframes();
   return frames_.back();
 }

@@ -16,7 +16,7 @@ namespace hdprior {
 // The estimate for one sweep.
 struct OdometryFrame {
   int64_t timestampNs = 0;
-  SE3 odomTEgo = SE3::Identity();        // the first sweep defines the odometry frame
+  SE3 odomTEgo = SE3::Identity();        // the first sweep defines the odometry frame; with options.drift, degraded
   SE3 sweepMotion = SE3::Identity();     // ego(t)_T_ego(t + period) used to deskew this sweep
   double periodNs = 1e8;
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  // scan-to-map, body [v, w]
@@ -24,7 +24,8 @@ struct OdometryFrame {
 };
 
 // LOAM-style lidar odometry: deskew, features per ring, scan-to-map registration against a bounded
-// local map, keyframes. Feed sweeps in time order.
+// local map, keyframes. Feed sweeps in time order. With options.drift the reported poses (frames,
+// keyframes) carry that drift; the registration and its local map keep the undegraded estimate.
 class Odometry {
  public:
   explicit Odometry(const OdometryOptions& options = {}, const KeyframeOptions& keyframes = {});
@@ -40,6 +41,7 @@ class Odometry {
 
  private:
   SE3 predictedMotion(int64_t timestampNs, double& periodNs) const;
+  SE3 reportedPose(const SE3& registered) const;
   void updateKeyframes();
 
   OdometryOptions options_;
@@ -47,6 +49,7 @@ class Odometry {
   VoxelFeatureMap edgeMap_, planeMap_;
   VoxelFeatureMap lastEdges_, lastPlanes_;  // the previous scan, for the optional scan-to-scan guess
   std::vector<OdometryFrame> frames_;
+  std::vector<SE3> registered_;  // odom_T_ego of every frame as registered (frames_ carry the drift, if any)
   std::vector<Keyframe> keyframes_;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 #include <string>
 
+#include "engine/odom/odometry_drift.h"
+
 namespace hdprior {
 
 // LOAM feature extraction per ring (see ring_features.h). Curvature is the LOAM paper's
@@ -61,6 +63,9 @@ struct OdometryOptions {
   DeskewOptions deskew;
   RegistrationOptions registration;
   LocalMapOptions localMap;
+  // Degrades the reported trajectory (frames, keyframes) only; registration and the local map stay
+  // on the odometry's own estimate. Off (all zero) by default: for evaluation.
+  OdometryDrift drift;
 };
 
 }  // namespace hdprior

@@ -74,6 +74,11 @@ Sections sectionsOf(Config& c) {
         {"max_points_per_voxel", &m.maxPointsPerVoxel, 1, 10000},
         {"min_point_spacing", &m.minPointSpacing, 0, 100},
         {"radius", &m.radius, 1, 100000}}},
+      // Ranges checked by odometryDriftProblem (the scale's is open) after reading.
+      {"odometry.drift",
+       {{"scale", &c.odometry.drift.scale},
+        {"yaw_deg_per_100m", &c.odometry.drift.yawDegPer100m},
+        {"pitch_deg_per_100m", &c.odometry.drift.pitchDegPer100m}}},
       {"keyframes", {{"distance", &c.keyframes.distance, 0, 100000}, {"rotation_deg", &c.keyframes.rotationDeg, 0, 360}}},
       {"road_points", {{"thin_cell", &c.roadPoints.thinCell, 0, 10}, {"submap", &c.submapRoadPoints}}},
       {"road_points.ground",
@@ -174,7 +179,9 @@ Sections sectionsOf(Config& c) {
         {"incremental_window", &c.graph.incrementalWindow, 0, 1000000},
         {"fix_first", &c.graph.fixFirst},
         {"odometry_translation_sigma", &c.graph.odometryTranslationSigma, 0, 100},
-        {"odometry_rotation_sigma_deg", &c.graph.odometryRotationSigmaDeg, 0, 180}}},
+        {"odometry_rotation_sigma_deg", &c.graph.odometryRotationSigmaDeg, 0, 180},
+        {"odometry_translation_sigma_per_m", &c.graph.odometryTranslationSigmaPerM, 0, 10},
+        {"odometry_rotation_sigma_deg_per_m", &c.graph.odometryRotationSigmaDegPerM, 0, 180}}},
   };
 }
 
@@ -272,6 +279,9 @@ Config parseConfig(const std::string& text, const std::string& source) {
   readSection(json_reading::parse(text, source), "", sections, c, source);
   if (c.odometry.deskew.mode != "none" && c.odometry.deskew.mode != "constant_velocity") {
     throw Error(source, "odometry.deskew.mode must be \"none\" or \"constant_velocity\"");
+  }
+  if (const std::string problem = odometryDriftProblem(c.odometry.drift); !problem.empty()) {
+    throw Error(source, "odometry.drift." + problem);
   }
   if (c.odometry.features.minRange >= c.odometry.features.maxRange) {
     throw Error(source, "odometry.features.min_range must be below max_range");

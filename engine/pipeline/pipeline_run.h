@@ -45,6 +45,8 @@ struct PipelineRun {
   std::vector<float> mapIntensity;
   StageTimes times;
   size_t maxLocalMapPoints = 0;
+  OdometryDrift odometryDrift;   // injected into the odometry's reported poses (config odometry.drift)
+  PoseGraphOptions graphOptions;  // with priors: the graph's options in use (drift model covering odometryDrift)
 
   bool hasPriors() const { return !optimized.empty(); }
   const PoseTrajectory& final() const { return hasPriors() ? optimized : estimate; }

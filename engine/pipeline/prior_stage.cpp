@@ -6,6 +6,7 @@
 
 #include "engine/error.h"
 #include "engine/geom/se2.h"
+#include "engine/graph/odometry_information.h"
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
@@ -27,23 +28,11 @@ Eigen::Vector3d planarBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 
 }  // namespace
 
-Matrix6d odometryInformation(const Eigen::Matrix<double, 6, 6>& relativeCovariance, const PoseGraphOptions& options) {
-  // [v, w] -> [w, v]: the between-factor's residual is [rotation, translation].
-  Matrix6d covariance;
-  covariance << relativeCovariance.bottomRightCorner<3, 3>(), relativeCovariance.bottomLeftCorner<3, 3>(),
-      relativeCovariance.topRightCorner<3, 3>(), relativeCovariance.topLeftCorner<3, 3>();
-  const double rotation = options.odometryRotationSigmaDeg * std::numbers::pi / 180.0;
-  covariance.diagonal().head<3>().array() += rotation * rotation;
-  covariance.diagonal().tail<3>().array() += options.odometryTranslationSigma * options.odometryTranslationSigma;
-  // A registration that found too little overlap reports no covariance: trust it weakly.
-  if (!(covariance.diagonal().minCoeff() > 0.0) || !covariance.allFinite()) return Matrix6d::Identity() * 1e-2;
-  return covariance.inverse();
-}
-
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom)
     : map_(map), config_(config), cityTOdom_(cityTOdom), matcher_(std::make_unique<MapMatcher>(map, config.match)),
       graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
+  config_.graph = coveringOdometryDrift(config.graph, config.odometry.drift);
 }
 
 PriorStage::~PriorStage() = default;
@@ -89,7 +78,9 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
 
   start = std::chrono::steady_clock::now();
   const size_t k = graph_->addKeyframe(kf.timestampNs, odometryPose, m.predicted);
-  if (k > 0) graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, config_.graph));
+  if (k > 0) {
+    graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph));
+  }
   if (m.hasPrior) graph_->addPrior(k, m.prior);
   graph_->solve(true);
   times_.graphS += secondsSince(start);
@@ -105,12 +96,14 @@ SolveSummary PriorStage::finish() {
 
 void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph) {
   config_.prior = prior;
-  config_.graph = graph;
+  config_.graph = coveringOdometryDrift(graph, config_.odometry.drift);
   auto rebuilt = std::make_unique<PoseGraph>(graph);
   for (size_t k = 0; k < matches_.size(); ++k) {
     const Keyframe& kf = odometry.keyframes()[k];
     rebuilt->addKeyframe(kf.timestampNs, cityTOdom_ * kf.odomTEgo, graph_->pose(k));
-    if (k > 0) rebuilt->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, graph));
+    if (k > 0) {
+      rebuilt->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph));
+    }
     KeyframeMatch& m = matches_[k];
     if (m.hasPrior) {
       m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), prior);

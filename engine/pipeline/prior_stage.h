@@ -6,6 +6,7 @@
 
 #include "engine/geom/pose_trajectory.h"
 #include "engine/geom/se3.h"
+#include "engine/graph/odometry_information.h"
 #include "engine/graph/pose_graph.h"
 #include "engine/graph/pose_prior.h"
 #include "engine/io/lidar_sweep.h"
@@ -49,8 +50,9 @@ struct PriorStageTimes {
 // The paper's HD-map prior stage, fed keyframe by keyframe as the odometry makes them: the keyframe's
 // road points (its sweep, or its key-frame sub-map), scan-to-map matching from the odometry pose
 // corrected by the graph so far, the pose prior (yaw, x, y from the match, z from the ground
-// height) for accepted and degenerate matches, the odometry between-factor, and an incremental,
-// warm-started solve. finish() is the final batch solve.
+// height) for accepted and degenerate matches, the odometry between-factor (its covariance plus the
+// graph's drift model, widened to cover config.odometry.drift: engine/graph/odometry_information.h),
+// and an incremental, warm-started solve. finish() is the final batch solve.
 class PriorStage {
  public:
   // cityTOdom places the odometry frame in the city (the first ground-truth pose).
@@ -69,6 +71,8 @@ class PriorStage {
   const std::vector<KeyframeMatch>& matches() const { return matches_; }
   const PoseGraph& graph() const { return *graph_; }
   const PriorStageTimes& times() const { return times_; }
+  // The graph options in use: the configuration's, with the drift model covering odometry.drift.
+  const PoseGraphOptions& graphOptions() const { return config_.graph; }
 
  private:
   SE3 predictedPose(const Keyframe& keyframe) const;
@@ -81,9 +85,5 @@ class PriorStage {
   std::vector<KeyframeMatch> matches_;
   PriorStageTimes times_;
 };
-
-// The information of an odometry between-factor (residual order [rotation, translation]) from the
-// keyframe's relative covariance (body [v, w]) plus the graph options' floors.
-Matrix6d odometryInformation(const Eigen::Matrix<double, 6, 6>& relativeCovariance, const PoseGraphOptions& options);
 
 }  // namespace hdprior

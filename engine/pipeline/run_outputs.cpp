@@ -109,6 +109,18 @@ json timingJson(const StageTimes& t, size_t sweeps) {
           {"global_map_s", t.mapS}};
 }
 
+// The drift injected into the odometry's poses (all zero: none).
+json driftJson(const OdometryDrift& d) {
+  return {{"scale", d.scale}, {"yaw_deg_per_100m", d.yawDegPer100m}, {"pitch_deg_per_100m", d.pitchDegPer100m}};
+}
+
+// The graph's odometry drift model as the run used it.
+json driftModelJson(const PoseGraphOptions& g) {
+  return {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
+          {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
+          {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}};
+}
+
 json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& metrics) {
   json aligned = json::array();
   for (const auto& e : metrics.odometryAligned) aligned.push_back(evaluationJson(e));
@@ -119,12 +131,14 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
             {"timing", timingJson(run.times, run.estimate.size())},
             {"max_local_map_points", run.maxLocalMapPoints},
             {"map_points", run.mapPoints.size()},
+            {"odometry_drift", driftJson(run.odometryDrift)},
             {"odometry", evaluationJson(metrics.odometry)},
             {"odometry_aligned", aligned}};
   if (metrics.optimized) {
     m["optimized"] = evaluationJson(*metrics.optimized);
     m["matches"] = {{"accepted", metrics.matches.accepted}, {"degenerate", metrics.matches.degenerate},
                     {"rejected", metrics.matches.rejected}};
+    m["odometry_drift_model"] = driftModelJson(run.graphOptions);
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
                         {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};
   }

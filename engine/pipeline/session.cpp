@@ -169,7 +169,9 @@ PipelineRun Session::finish(double mapVoxel) {
   run.cityTOdom = cityTOdom_;
   run.groundTruth = groundTruth_;
   run.estimate = odometryTrajectory();
+  run.odometryDrift = config_.odometry.drift;
   if (priors_) {
+    run.graphOptions = priors_->graphOptions();
     run.finalSolve = optimize();
     run.optimized = optimizedTrajectory();
     run.optimizedKeyframes = priors_->graph().poses();

@@ -30,6 +30,8 @@ void drawWeights(AppState& state) {
   ImGui::SliderInt("max iterations", &g.maxIterations, 1, 200);
   sliderD("odometry sigma (m)", g.odometryTranslationSigma, 0.0, 0.5, "%.3f");
   sliderD("odometry sigma (deg)", g.odometryRotationSigmaDeg, 0.0, 2.0, "%.3f");
+  sliderD("odometry sigma per m", g.odometryTranslationSigmaPerM, 0.0, 0.05, "%.4f");
+  sliderD("odometry sigma (deg/m)", g.odometryRotationSigmaDegPerM, 0.0, 0.1, "%.4f");
   ImGui::Checkbox("fix first keyframe", &g.fixFirst);
   ImGui::PopItemWidth();
 }

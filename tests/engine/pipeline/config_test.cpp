@@ -76,4 +76,24 @@ TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
   EXPECT_NE(errorOf("{").find("invalid JSON"), std::string::npos);
 }
 
+TEST(Config, OdometryDriftAndTheGraphsDriftModel) {
+  const Config c = parseConfig(R"({"odometry": {"drift": {"scale": 0.007, "yaw_deg_per_100m": -0.5}},
+                                   "graph": {"odometry_translation_sigma_per_m": 0.01, "odometry_rotation_sigma_deg_per_m": 0.02}})",
+                               "c.json");
+  EXPECT_DOUBLE_EQ(c.odometry.drift.scale, 0.007);
+  EXPECT_DOUBLE_EQ(c.odometry.drift.yawDegPer100m, -0.5);
+  EXPECT_DOUBLE_EQ(c.odometry.drift.pitchDegPer100m, 0.0);
+  EXPECT_DOUBLE_EQ(c.graph.odometryTranslationSigmaPerM, 0.01);
+  EXPECT_DOUBLE_EQ(c.graph.odometryRotationSigmaDegPerM, 0.02);
+  EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
+  EXPECT_NE(formatConfig(c).find("\"yaw_deg_per_100m\": -0.5"), std::string::npos);
+  EXPECT_FALSE(Config{}.odometry.drift.active());  // no drift unless asked for
+  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"scale": 0.2}}})"), "my.json: odometry.drift.scale = 0.2 is out of range (-0.2, 0.2)");
+  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"pitch_deg_per_100m": 30}}})"),
+            "my.json: odometry.drift.pitch_deg_per_100m = 30 is out of range [-20, 20]");
+  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"roll": 1}}})"), "my.json: unknown key odometry.drift.roll");
+  EXPECT_EQ(errorOf(R"({"graph": {"odometry_translation_sigma_per_m": -0.1}})"),
+            "my.json: graph.odometry_translation_sigma_per_m = -0.1 is out of range [0.0, 10.0]");
+}
+
 }  // namespace hdprior

@@ -1,0 +1,42 @@
+#include "engine/graph/odometry_information.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hdprior {
+namespace {
+
+double square(double x) { return x * x; }
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+}  // namespace
+
+Eigen::Matrix<double, 6, 1> odometryDriftVariances(double distance, const PoseGraphOptions& o) {
+  const double rotation = square(radians(o.odometryRotationSigmaDeg)) + square(radians(o.odometryRotationSigmaDegPerM) * distance);
+  const double translation = square(o.odometryTranslationSigma) + square(o.odometryTranslationSigmaPerM * distance);
+  Eigen::Matrix<double, 6, 1> v;
+  v << rotation, rotation, rotation, translation, translation, translation;
+  return v;
+}
+
+Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& previousTThis, const PoseGraphOptions& options) {
+  // [v, w] -> [w, v]: the between-factor's residual is [rotation, translation].
+  Matrix6d covariance;
+  covariance << relativeCovariance.bottomRightCorner<3, 3>(), relativeCovariance.bottomLeftCorner<3, 3>(),
+      relativeCovariance.topRightCorner<3, 3>(), relativeCovariance.topLeftCorner<3, 3>();
+  covariance.diagonal() += odometryDriftVariances(previousTThis.translation().norm(), options);
+  // A registration that found too little overlap reports no covariance: trust it weakly.
+  if (!(covariance.diagonal().minCoeff() > 0.0) || !covariance.allFinite()) return Matrix6d::Identity() * 1e-2;
+  return covariance.inverse();
+}
+
+PoseGraphOptions coveringOdometryDrift(const PoseGraphOptions& options, const OdometryDrift& drift) {
+  PoseGraphOptions out = options;
+  out.odometryTranslationSigmaPerM = std::max(out.odometryTranslationSigmaPerM, std::abs(drift.scale));
+  const double degPerM = std::max(std::abs(drift.yawDegPer100m), std::abs(drift.pitchDegPer100m)) / 100.0;
+  out.odometryRotationSigmaDegPerM = std::max(out.odometryRotationSigmaDegPerM, degPerM);
+  return out;
+}
+
+}  // namespace hdprior

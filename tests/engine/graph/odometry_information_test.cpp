@@ -1,0 +1,92 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/graph/odometry_information.h"
+
+namespace hdprior {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+SE3 forward(double metres) {
+  SE3 T = SE3::Identity();
+  T.translation() = Eigen::Vector3d(metres, 0, 0);
+  return T;
+}
+
+}  // namespace
+
+// The drift model: floors plus per-metre sigmas in quadrature, per axis, in [rotation, translation].
+TEST(OdometryInformation, DriftModelAddsPerMetreSigmasInQuadrature) {
+  PoseGraphOptions o;
+  o.odometryTranslationSigma = 0.01;
+  o.odometryRotationSigmaDeg = 0.02;
+  o.odometryTranslationSigmaPerM = 0.005;
+  o.odometryRotationSigmaDegPerM = 0.01;
+  const auto v = odometryDriftVariances(2.0, o);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2) + std::pow(0.02 * kDeg, 2), 1e-18) << i;
+    EXPECT_NEAR(v[3 + i], 0.01 * 0.01 + 0.01 * 0.01, 1e-15) << i;
+  }
+  PoseGraphOptions perMetreOnly;  // defaults: no constant floors
+  EXPECT_TRUE(odometryDriftVariances(0.0, perMetreOnly).isZero());
+}
+
+TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
+  Matrix6d vw = Matrix6d::Zero();  // body [v, w]
+  vw.diagonal() << 1e-4, 2e-4, 3e-4, 1e-6, 2e-6, 3e-6;
+  vw(0, 5) = vw(5, 0) = 1e-6;  // v_x with w_z
+  PoseGraphOptions o;
+  o.odometryTranslationSigmaPerM = 0.01;
+  o.odometryRotationSigmaDegPerM = 0.0;
+  const Matrix6d information = odometryInformation(vw, forward(2.0), o);
+  const Matrix6d covariance = information.inverse();
+  EXPECT_NEAR(covariance(0, 0), 1e-6, 1e-12);            // rotation first
+  EXPECT_NEAR(covariance(2, 2), 3e-6, 1e-12);
+  EXPECT_NEAR(covariance(3, 3), 1e-4 + 4e-4, 1e-12);     // translation, plus (0.01 * 2 m)^2
+  EXPECT_NEAR(covariance(5, 5), 3e-4 + 4e-4, 1e-12);
+  EXPECT_NEAR(covariance(2, 3), 1e-6, 1e-12);            // w_z with v_x
+  // Without a covariance (an external trajectory), the drift model alone.
+  PoseGraphOptions model;
+  model.odometryTranslationSigmaPerM = 0.01;
+  model.odometryRotationSigmaDegPerM = 0.005;
+  const Matrix6d modelOnly = odometryInformation(Matrix6d::Zero(), forward(2.0), model);
+  EXPECT_NEAR(modelOnly(4, 4), 1.0 / 4e-4, 1e-6);
+  EXPECT_NEAR(modelOnly(0, 0), 1.0 / std::pow(0.01 * kDeg, 2), 1e-3);
+  // Nothing at all (no covariance, no model, or not finite): weak.
+  PoseGraphOptions noModel;
+  noModel.odometryTranslationSigmaPerM = noModel.odometryRotationSigmaDegPerM = 0.0;
+  EXPECT_TRUE(odometryInformation(Matrix6d::Zero(), forward(2.0), noModel).isApprox(Matrix6d::Identity() * 1e-2));
+  Matrix6d bad = vw;
+  bad(1, 1) = std::nan("");
+  EXPECT_TRUE(odometryInformation(bad, forward(2.0), o).isApprox(Matrix6d::Identity() * 1e-2));
+}
+
+// The defaults describe the undrifted built-in odometry (README: measured normalised errors).
+TEST(OdometryInformation, DefaultsAreASmallDriftModel) {
+  const PoseGraphOptions o;
+  EXPECT_GT(o.odometryTranslationSigmaPerM, 0.0);
+  EXPECT_LE(o.odometryTranslationSigmaPerM, 1e-3);
+  EXPECT_GT(o.odometryRotationSigmaDegPerM, 0.0);
+  EXPECT_LE(o.odometryRotationSigmaDegPerM, 1e-3);
+}
+
+TEST(OdometryInformation, InjectedDriftWidensTheModelToCoverIt) {
+  PoseGraphOptions o;
+  o.odometryTranslationSigmaPerM = 0.002;
+  o.odometryRotationSigmaDegPerM = 0.05;
+  const PoseGraphOptions none = coveringOdometryDrift(o, {});
+  EXPECT_EQ(none.odometryTranslationSigmaPerM, 0.002);
+  EXPECT_EQ(none.odometryRotationSigmaDegPerM, 0.05);
+  const PoseGraphOptions wide = coveringOdometryDrift(o, {-0.007, 0.5, -2.0});
+  EXPECT_DOUBLE_EQ(wide.odometryTranslationSigmaPerM, 0.007);
+  EXPECT_DOUBLE_EQ(wide.odometryRotationSigmaDegPerM, 0.05);  // already wider than 2 deg/100 m
+  const PoseGraphOptions yaw = coveringOdometryDrift(PoseGraphOptions{}, {0.001, -8.0, 1.0});
+  EXPECT_DOUBLE_EQ(yaw.odometryTranslationSigmaPerM, 0.001);
+  EXPECT_DOUBLE_EQ(yaw.odometryRotationSigmaDegPerM, 0.08);
+  EXPECT_EQ(yaw.priorHuber, PoseGraphOptions{}.priorHuber);
+}
+
+}  // namespace hdprior
