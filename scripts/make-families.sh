@@ -6,7 +6,8 @@
 # so nothing tuned on the tuning family has seen a validation world. OUT_DIR/families.tsv lists
 # family, source, seed, seconds and log id. N = 5 is ~3,400 sweeps: about 8 minutes on an idle
 # 2-core machine (a family sweep ~0.12 s on 2 threads), several times that under load.
-# Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2).
+# Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2),
+# DURATION (seconds of every log instead of 30-40).
 set -euo pipefail
 if [[ $# -lt 1 || $# -gt 2 || "$1" == -* ]]; then
   echo "usage: scripts/make-families.sh OUT_DIR [N]" >&2
@@ -35,11 +36,11 @@ for family in tuning validation; do
     seed=$((10 * base + i))
     if (( i == n && n > 1 )); then
       source="map"
-      seconds=30
+      seconds=${DURATION:-30}
       args=(--map "$real" --trajectory route)
     else
       source="town $((base + i))"
-      seconds=$((30 + (i * 7) % 11))   # 30-40 s
+      seconds=${DURATION:-$((30 + (i * 7) % 11))}   # 30-40 s
       args=(--town $((base + i)))
     fi
     echo "[$family $i/$n] $source, seed $seed, $seconds s" >&2
