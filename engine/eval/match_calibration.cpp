@@ -13,7 +13,7 @@ namespace hdprior {
 namespace {
 
 // The marginal variance of the unit direction u (scaled units) under a possibly singular information:
-// infinite when u reaches into the information's null space.
+// infinite when u reaches into the information's null space or is no better known than 100 m.
 double marginalVariance(const Eigen::Matrix3d& scaledInformation, const Eigen::Vector3d& u) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (scaledInformation + scaledInformation.transpose()));
   const double largest = eig.eigenvalues().maxCoeff();
@@ -28,7 +28,8 @@ double marginalVariance(const Eigen::Matrix3d& scaledInformation, const Eigen::V
     }
     variance += c * c / lambda;
   }
-  return variance;
+  // A sigma beyond 100 m (or 10 rad x yawLength) is numerical residue of a projected-out direction.
+  return variance < 1e4 ? variance : std::numeric_limits<double>::infinity();
 }
 
 DirectionCalibration calibrate(std::span<const MatchErrorSample> samples, int axis) {

@@ -6,12 +6,12 @@
 
 namespace hdprior {
 
-Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information) {
+Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information, double floor) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(information);
   const double largest = std::max(eig.eigenvalues().maxCoeff(), 0.0);
   Eigen::Matrix3d observed = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i) {
-    if (eig.eigenvalues()(i) > 1e-9 * largest && largest > 0.0) observed += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
+    if (eig.eigenvalues()(i) > std::max(1e-9 * largest, floor) && largest > 0.0) observed += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
   }
   return observed;
 }

@@ -5,8 +5,9 @@ namespace hdprior {
 
 // Gaussians in information form (possibly singular: zero information in unobservable directions).
 
-// The projector onto the directions in which an information matrix is not zero.
-Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information);
+// The projector onto the directions in which an information matrix is not zero: eigenvalues above
+// 1e-9 of the largest, and above `floor`.
+Eigen::Matrix3d observedProjector(const Eigen::Matrix3d& information, double floor = 0.0);
 
 // The information of a Gaussian whose covariance gains sigma^2 along the direction a (Woodbury;
 // exact for a singular information too, e.g. a degenerate match's).

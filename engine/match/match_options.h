@@ -82,12 +82,12 @@ struct MatchOptions {
   int evidenceStride = 4;               // every n-th road point is counted
   double evidenceMaxOffset = 3.2;       // metres searched along and across the heading ...
   double evidenceMaxYawDeg = 6.4;       // ... and in yaw; beyond: unbounded
-  double evidenceKappa = 1.7;           // half-width = kappa sigma (uniform over the interval: sqrt 3)
-  double mapSigma = 0.10;               // metres: the drivable polygon's own error against the kerb
-  double mapSigmaYawDeg = 0.10;
+  double evidenceKappa = 3.0;           // half-width = kappa sigma (tuning family, README: HD-map priors)
+  double mapSigma = 0.20;               // metres: the drivable polygon's own error against the kerb
+  double mapSigmaYawDeg = 0.20;
   double maxSigmaAlong = 1.5;           // metres; a direction less certain than this is reported unobservable
-  double maxSigmaLateral = 0.5;
-  double maxSigmaYawDeg = 1.0;
+  double maxSigmaLateral = 0.3;
+  double maxSigmaYawDeg = 0.5;
 };
 
 }  // namespace hdprior

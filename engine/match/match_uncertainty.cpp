@@ -9,9 +9,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <Eigen/QR>
 
-#include "engine/geom/information.h"
 #include "engine/geom/se2.h"
 #include "engine/map/boundary_distance.h"
 
@@ -143,35 +141,39 @@ void widenToEvidence(const Eigen::Vector3d& halfWidths, const MatchOptions& o, M
   const Eigen::Vector3d scale(1.0, 1.0, o.yawLength);
   const Eigen::Matrix3d fromCity = scale.asDiagonal() * toEstimateFrame(r.estimate.z());  // city offset -> scaled local
   const Eigen::Matrix3d toCity = fromCity.inverse();
-  Eigen::Matrix3d information = toCity.transpose() * r.information * toCity;
-  const Eigen::Vector3d laplace = axisVariances(information);
+  const Eigen::Matrix3d laplaceInformation = toCity.transpose() * r.information * toCity;
+  const Eigen::Vector3d evidenceSigma = halfWidths.cwiseProduct(scale) / o.evidenceKappa;
   const Eigen::Vector3d mapSigma(o.mapSigma, o.mapSigma, o.mapSigmaYawDeg * kDeg * o.yawLength);
   const Eigen::Vector3d cap(o.maxSigmaAlong, o.maxSigmaLateral, o.maxSigmaYawDeg * kDeg * o.yawLength);
-  const Eigen::Vector3d width = halfWidths.cwiseProduct(scale);
 
-  // Each axis the Laplace information observes: its variance raised to the evidence's, plus the map's
-  // error (added along the axis, so the other axes' marginals keep theirs); an axis that then
-  // exceeds its cap, or that the evidence leaves unbounded, is marginalised out.
-  std::vector<int> dropped;
-  for (int a = 0; a < 3; ++a) {
-    if (!std::isfinite(laplace(a))) continue;
-    const double evidence = width(a) / o.evidenceKappa;
-    const double variance = std::max(laplace(a), evidence * evidence) + mapSigma(a) * mapSigma(a);
-    if (!std::isfinite(width(a)) || std::sqrt(variance) > cap(a)) {
-      dropped.push_back(a);
-      continue;
-    }
-    information = withVarianceAlong(information, Eigen::Vector3d::Unit(a), std::sqrt(variance - laplace(a)));
+  // Each direction the Laplace information observes (its eigenvectors u): its variance raised to the
+  // evidence's along u (the axes' evidence projected on u), plus the map's error; a direction that then
+  // exceeds its cap, or that leans on an axis the evidence leaves unbounded, is dropped.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (laplaceInformation + laplaceInformation.transpose()));
+  const double largest = eig.eigenvalues().maxCoeff();
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero(), covariance = Eigen::Matrix3d::Zero();
+  r.observableDirections = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double lambda = eig.eigenvalues()(i);
+    if (!(largest > 0.0) || lambda <= 1e-9 * largest) continue;
+    const Eigen::Vector3d u = eig.eigenvectors().col(i);
+    const Eigen::Vector3d weight = u.cwiseAbs2();
+    bool unbounded = false;
+    for (int a = 0; a < 3; ++a) unbounded |= weight(a) > 0.01 && !std::isfinite(evidenceSigma(a));
+    if (unbounded) continue;
+    double evidence = 0.0;
+    for (int a = 0; a < 3; ++a)
+      if (std::isfinite(evidenceSigma(a))) evidence += weight(a) * evidenceSigma(a) * evidenceSigma(a);
+    const double variance = std::max(1.0 / lambda, evidence) + weight.dot(mapSigma.cwiseAbs2());
+    if (variance > weight.dot(cap.cwiseAbs2())) continue;
+    information += u * u.transpose() / variance;
+    covariance += u * u.transpose() * variance;
+    ++r.observableDirections;
   }
-  for (int a : dropped) information = marginalizedAlong(information, Eigen::Vector3d::Unit(a));
-
   r.evidenceHalfWidths = halfWidths;
-  r.laplaceSigmas = laplace.cwiseSqrt().cwiseQuotient(scale);
-  const Eigen::Matrix3d observed = observedProjector(information);
-  r.observableDirections = int(std::lround(observed.trace()));
-  information = observed * information * observed;
+  r.laplaceSigmas = axisVariances(laplaceInformation).cwiseSqrt().cwiseQuotient(scale);
   r.information = fromCity.transpose() * information * fromCity;
-  r.covariance = toCity * information.completeOrthogonalDecomposition().pseudoInverse() * toCity.transpose();
+  r.covariance = toCity * covariance * toCity.transpose();
   if (r.status == MatchStatus::Rejected) return;
   if (r.observableDirections == 0) {
     r.status = MatchStatus::Rejected;

@@ -23,11 +23,12 @@ Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const
                                     std::span<const Eigen::Vector2d> curbs, const Eigen::Vector3d& estimate,
                                     const MatchOptions& options);
 
-// Makes result's covariance describe its error rather than the NDT score's local curvature alone:
-// in the estimate's frame each direction's sigma is at least half-width / evidenceKappa (the
-// Laplace correlations kept), the map's own error (mapSigma, mapSigmaYawDeg) is added, and a
-// direction whose sigma then exceeds its cap (maxSigma*) or whose half-width is unbounded is
-// reported unobservable (no information). Sets observableDirections and, unless the match is
+// Makes result's covariance describe its error rather than the NDT score's local curvature alone: in
+// the estimate's frame (yaw scaled by yawLength), along each direction the Laplace information
+// observes (its eigenvectors u) the variance is raised to the evidence's, sum_a u_a^2 (half-width_a /
+// evidenceKappa)^2, and the map's own error (mapSigma, mapSigmaYawDeg, projected the same way) is
+// added; a direction that then exceeds its cap (maxSigma*, projected) or leans on an axis whose
+// half-width is unbounded is reported unobservable (no information). Sets observableDirections and, unless the match is
 // rejected, its status: Accepted with three, Degenerate with one or two, Rejected with none.
 void widenToEvidence(const Eigen::Vector3d& halfWidths, const MatchOptions& options, MatchResult& result);
 

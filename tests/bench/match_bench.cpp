@@ -55,10 +55,12 @@ const Fixture& fixture() {
   return f;
 }
 
-void runMatches(benchmark::State& state, MatchBackend backend) {
+void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncertainty = true) {
   const Fixture& f = fixture();
   MatchOptions o;
   o.backend = backend;
+  o.evidenceUncertainty = honestUncertainty;
+  o.staleRegions = honestUncertainty;
   o.timeBudgetMs = 1e6;  // measure the full match, never cut it
   MapMatcher matcher(*f.map, o);
   size_t i = 0, n = 0, ok = 0;
@@ -80,8 +82,9 @@ void runMatches(benchmark::State& state, MatchBackend backend) {
   state.counters["points"] = double(f.cases.front().points.size());
 }
 
-void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d); }
-BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90);
+// Argument: the default (1: stale regions and the evidence's uncertainty) or the matcher before them (0).
+void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, state.range(0) == 1); }
+BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90)->Arg(1)->Arg(0);
 
 void BM_MatchPclNdt(benchmark::State& state) { runMatches(state, MatchBackend::PclNdt); }
 BENCHMARK(BM_MatchPclNdt)->Unit(benchmark::kMillisecond)->Iterations(18);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <Eigen/LU>
@@ -80,8 +81,8 @@ TEST(MatchUncertainty, OneSidedRoadPointsNeedTheCurbToBoundTheLateralPlace) {
   EXPECT_TRUE(std::isinf(withCurbs.x()));
 }
 
-// The widened covariance: each axis (estimate frame) at least half-width / kappa, plus the map's
-// error, cross terms kept; an axis beyond its cap is marginalised out and the match is degenerate.
+// The widened covariance: along each observed direction (here the estimate frame's axes) at least
+// half-width / kappa, plus the map's error; a direction beyond its cap is dropped: degenerate.
 TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCaps) {
   MatchOptions o;
   o.evidenceKappa = 2.0;
@@ -90,10 +91,10 @@ TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCa
   MatchResult r;
   r.status = MatchStatus::Accepted;
   r.estimate = {5.0, 7.0, 0.5};
-  // Laplace: along 0.02 m, lateral 0.03 m, yaw 0.05 deg in the estimate's frame, lateral-yaw correlated.
-  Eigen::Matrix3d local;
+  // Laplace: along 0.02 m, lateral 0.03 m, yaw 0.05 deg in the estimate's frame.
+  Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
   const double sy = 0.05 * kDeg;
-  local << 0.02 * 0.02, 0, 0, 0, 0.03 * 0.03, 0.5 * 0.03 * sy, 0, 0.5 * 0.03 * sy, sy * sy;
+  local.diagonal() << 0.02 * 0.02, 0.03 * 0.03, sy * sy;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   R.topLeftCorner<2, 2>() << std::cos(0.5), -std::sin(0.5), std::sin(0.5), std::cos(0.5);
   r.covariance = R * local * R.transpose();
@@ -105,7 +106,7 @@ TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCa
   EXPECT_NEAR(std::sqrt(c(0, 0)), std::hypot(0.02, 0.1), 1e-9);   // Laplace beats the evidence, plus map
   EXPECT_NEAR(std::sqrt(c(1, 1)), std::hypot(0.2, 0.1), 1e-9);    // evidence 0.4 / 2, plus map
   EXPECT_NEAR(std::sqrt(c(2, 2)), 0.2 * kDeg, 1e-12);
-  EXPECT_NEAR(c(1, 2), 0.5 * 0.03 * sy, 1e-12);                   // variance added along the axes: covariances kept
+  EXPECT_NEAR(c(1, 2), 0.0, 1e-15);
   EXPECT_TRUE((r.information * r.covariance).isApprox(Eigen::Matrix3d::Identity(), 1e-6));
 
   o.maxSigmaLateral = 0.15;
@@ -117,6 +118,22 @@ TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCa
   EXPECT_EQ(r.observableDirections, 2);
   const Eigen::Vector3d lateral(-std::sin(0.5), std::cos(0.5), 0.0);
   EXPECT_LT((r.information * lateral).norm(), 1e-9 * r.information.norm());
+}
+
+// A match whose only observed direction is (nearly) yaw, and the evidence leaves yaw unbounded: after
+// marginalising it nothing is left, not a rounding residue posing as a lateral prior.
+TEST(MatchUncertainty, NothingIsLeftWhenTheOnlyObservedDirectionIsDropped) {
+  MatchResult r;
+  r.status = MatchStatus::Degenerate;
+  r.estimate = {80.0, 740.0, -0.12};
+  const Eigen::Vector3d v = Eigen::Vector3d(0.02, 0.05, 1.0).normalized();
+  r.information = 1e5 * v * v.transpose();
+  r.covariance = v * v.transpose() / 1e5;
+  const double inf = std::numeric_limits<double>::infinity();
+  widenToEvidence(Eigen::Vector3d(inf, 1.3, inf), MatchOptions{}, r);
+  EXPECT_EQ(r.status, MatchStatus::Rejected) << r.reason;
+  EXPECT_EQ(r.observableDirections, 0);
+  EXPECT_TRUE(r.information.isZero(1e-12)) << r.information;
 }
 
 }  // namespace
