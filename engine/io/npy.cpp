@@ -46,6 +46,7 @@ NpyDtype parseDescr(const ByteView& view, const std::string& descr) {
 }
 
 std::vector<size_t> parseShape(const ByteView& view, const std::string& tuple) {
+  if (tuple.size() < 2 || tuple.front() != '(' || tuple.back() != ')') view.fail("malformed npy shape '" + tuple + "'");
   std::vector<size_t> shape;
   std::string digits;
   for (char c : tuple.substr(1, tuple.size() - 2) + ",") {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <sstream>
 
 #include "engine/eval/eval_report.h"
@@ -81,11 +82,11 @@ TEST(EvalReport, PerLogCsvHasARowPerLogAndQuotesTheError) {
   EXPECT_EQ(rows[0].rfind("log_id,path,sweeps,path_length_m,odometry_ate_mean_m,", 0), 0u);
   EXPECT_NE(rows[0].find(",optimized_ate_rmse_m,"), std::string::npos);
   EXPECT_EQ(rows[1].rfind("a,/logs/a,100,80.000,1.000000,2.000000,3.000000,4.000000,5.000000,1.500000,0.500000,,"
-                          "0.100000,0.200000,0.300000,0.400000,0.500000,0.150000,0.500000,,3,0,0,4.50,", 0), 0u)
+                          "0.100000,0.200000,0.300000,0.400000,0.500000,0.150000,0.500000,,3,0,0,,,,,,,4.50,", 0), 0u)
       << rows[1];
-  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
-  // Without priors the optimised columns and the match counts are empty.
-  EXPECT_NE(rows[3].find(",0.500000,,,,,,,,,,,,,4.50,"), std::string::npos) << rows[3];
+  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
+  // Without priors the optimised columns, the match counts and the prior calibration are empty.
+  EXPECT_NE(rows[3].find(",0.500000,,,,,,,,,,,,,,,,,,,4.50,"), std::string::npos) << rows[3];
   const size_t columns = std::count(rows[0].begin(), rows[0].end(), ',');
   EXPECT_EQ(std::count(rows[1].begin(), rows[1].end(), ','), long(columns));
   EXPECT_EQ(std::count(rows[3].begin(), rows[3].end(), ','), long(columns));
@@ -110,6 +111,31 @@ TEST(EvalReport, BoxPlotOfTheSuccessfulLogs) {
   EXPECT_EQ(im.width, 720);
   EXPECT_EQ(im.height, 540);
   EXPECT_EQ(im.rgb.size(), size_t(720 * 540 * 3));
+}
+
+// The priors' errors are pooled over the logs: per_log.csv has each log's, table.md the pooled
+// calibration and how many logs the priors made more than 10 % worse.
+TEST(EvalReport, PriorCalibrationIsPerLogAndPooled) {
+  LogEvaluation a = okLog("a", 1, true), b = okLog("b", 1, true);
+  const double inf = std::numeric_limits<double>::infinity();
+  a.priorErrors = {{{0.5, 0.1, 0.001}, {inf, 0.1, 0.01}}, {{0.5, -0.4, 0.001}, {inf, 0.1, 0.01}}};
+  b.priorErrors = {{{0.5, 0.2, 0.001}, {inf, 0.1, inf}}};
+  b.optimized->ate.translation.rmse = 4.0;  // worse than its odometry's 3.0
+  const auto rows = lines(perLogCsv({a, b}));
+  // a: lateral RMS sqrt((0.01 + 0.16) / 2), one of two beyond 3 sigma, median NEES (1 + 16) / 2.
+  EXPECT_NE(rows[1].find(",0.291548,0.500000,8.500000,"), std::string::npos) << rows[1];
+  const EvalSummary s = summarizeLogs({a, b});
+  EXPECT_EQ(s.priors.matches, 3u);
+  EXPECT_EQ(s.priors.along.observed, 0u);
+  EXPECT_EQ(s.priors.lateral.observed, 3u);
+  EXPECT_EQ(s.priors.yaw.observed, 2u);
+  EXPECT_NEAR(s.priors.lateral.beyond3Sigma, 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(s.priors.lateral.medianNees, 4.0, 1e-12);
+  EXPECT_EQ(s.logsWorse, 1u);
+  EXPECT_NEAR(s.worstRatio, 4.0 / 3.0, 1e-12);
+  const std::string md = summaryMarkdown(s);
+  EXPECT_NE(md.find("| lateral | 3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("more than 10 % above the odometry's: 1 (largest ratio 1.33)"), std::string::npos) << md;
 }
 
 }  // namespace hdprior

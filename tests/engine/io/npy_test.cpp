@@ -64,6 +64,9 @@ TEST(Npy, RejectsMalformedInputWithError) {
   EXPECT_THROW(parseNpy(withHeaderEdit("False", "True "), "t.npy"), Error);  // Fortran order
   EXPECT_THROW(parseNpy(withHeaderEdit("(785, 880)", "(785, 881)"), "t.npy"), Error);  // size mismatch
   EXPECT_THROW(parseNpy(withHeaderEdit("'shape'", "'shap_'"), "t.npy"), Error);
+  // A shape that is no tuple (found by fuzz.npy: it threw std::out_of_range, not Error).
+  EXPECT_THROW(parseNpy(withHeaderEdit("(785, 880)", ",785, 880)"), "t.npy"), Error);
+  EXPECT_THROW(parseNpy(withHeaderEdit("(785, 880)", "7       ,  "), "t.npy"), Error);
   try {
     parseNpy(std::span(good).first(1000), "where.npy");
     FAIL();

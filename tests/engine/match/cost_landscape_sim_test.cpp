@@ -52,10 +52,17 @@ const SimulatedDrive& drive() {
 }
 
 // The first keyframe whose run-time match has this status, inspected again.
-std::optional<KeyframeInspection> firstWith(MatchStatus status) {
+// The first keyframe whose drivable boundary, near its road points, constrains all three directions
+// (a junction) or leaves one free (a straight street): the boundary constraint's eigenvalues.
+std::optional<KeyframeInspection> firstWhereBoundaryObserves(bool all) {
   const SimulatedDrive& d = drive();
-  for (const KeyframeMatch& m : d.session->matches())
-    if (m.match.status == status) return d.session->inspectKeyframe(m.keyframe, d.config.roadPoints, d.config.match);
+  const MatchOptions& o = d.config.match;
+  for (const KeyframeMatch& m : d.session->matches()) {
+    const Eigen::Vector3d& e = m.match.eigenvalues;
+    if (e.maxCoeff() <= 0.0) continue;
+    const bool free = e.minCoeff() < o.degenerateRatio * e.maxCoeff() || e.minCoeff() < o.minBoundaryPoints;
+    if (free != all) return d.session->inspectKeyframe(m.keyframe, d.config.roadPoints, d.config.match);
+  }
   return std::nullopt;
 }
 
@@ -74,9 +81,9 @@ double rangeAlong(const CostLandscape& l, double heading) {
 }
 
 TEST(CostLandscapeSim, IsARidgeAlongAStraightStreet) {
-  const std::optional<KeyframeInspection> corridor = firstWith(MatchStatus::Degenerate);
-  const std::optional<KeyframeInspection> junction = firstWith(MatchStatus::Accepted);
-  ASSERT_TRUE(corridor && junction) << "the drive needs a degenerate and an accepted keyframe";
+  const std::optional<KeyframeInspection> corridor = firstWhereBoundaryObserves(false);
+  const std::optional<KeyframeInspection> junction = firstWhereBoundaryObserves(true);
+  ASSERT_TRUE(corridor && junction) << "the drive needs a keyframe on a straight street and one at a junction";
   const auto ratio = [](const KeyframeInspection& k) {
     const CostLandscape l = matchLandscape(*drive().map, drive().config.match, k.roadPoints, k.match.estimate);
     const double heading = k.match.estimate.z();  // the vehicle drives along the road

@@ -20,12 +20,22 @@ TEST(MatchCommand, PrintsTheMatchAsJson) {
   EXPECT_GT(j["road_points"].get<int>(), 1000);
   EXPECT_LT(std::abs(j["error"]["lateral"].get<double>()), 0.25);
   EXPECT_LT(std::abs(j["error"]["yaw_deg"].get<double>()), 0.5);
-  EXPECT_EQ(j["status"], "accepted");
-  EXPECT_EQ(j["observable_directions"], 3);
+  // The drivable area pins this sweep loosely (the road points end 1-2 m inside the mapped kerbs):
+  // the match says so, and what it keeps covers its error.
+  EXPECT_NE(j["status"], "accepted");
+  EXPECT_LT(j["observable_directions"].get<int>(), 3);
+  const double lateralHalfWidth = j["evidence_half_widths"]["lateral"].get<double>();
+  EXPECT_GT(lateralHalfWidth, 0.2);
+  EXPECT_LT(lateralHalfWidth, 1.0);
+  EXPECT_TRUE(j["evidence_half_widths"]["along"].is_null());
+  EXPECT_TRUE(j["sigma"]["along"].is_null());
+  if (!j["sigma"]["lateral"].is_null()) {
+    EXPECT_LE(std::abs(j["error"]["lateral"].get<double>()), 3.0 * j["sigma"]["lateral"].get<double>());
+  }
   EXPECT_GT(j["iterations"].get<int>(), 0);
   EXPECT_GT(j["time_ms"].get<double>(), 0.0);
   ASSERT_EQ(j["covariance_x_y_yaw"].size(), 3u);
-  EXPECT_GT(j["covariance_x_y_yaw"][0][0].get<double>(), 0.0);
+  ASSERT_EQ(j["information_x_y_yaw"].size(), 3u);
   // The initial pose is the truth moved 0.5 m forward, 1.5 m left, 3 degrees.
   EXPECT_NEAR(j["initial"]["yaw_deg"].get<double>() - j["truth"]["yaw_deg"].get<double>(), 3.0, 1e-3);
 }
