@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,6 +24,11 @@ class BoundaryDistance {
   float at(int col, int row) const { return values_[geometry_.index(col, row)]; }
   // Bilinear between cell centres (clamped at the border); NaN outside the grid.
   double distance(const Eigen::Vector2d& city) const;
+  // The value of the cell containing the point (a third of the cost, to a cell's accuracy); NaN outside.
+  double cellDistance(const Eigen::Vector2d& city) const {
+    int col, row;
+    return geometry_.cellOf(city, col, row) ? double(at(col, row)) : NAN;
+  }
 
  private:
   GridGeometry geometry_;

@@ -31,11 +31,14 @@ struct OffCounter {
   struct Counts {
     int road = 0, curbs = 0;
   };
-  Counts operator()(const Eigen::Vector3d& pose) const {
+  // Counting stops once a count passes its limit: the pose is implausible either way.
+  Counts operator()(const Eigen::Vector3d& pose, const Counts& limit) const {
     const Eigen::Rotation2Dd R(pose.z());
     Counts n;
-    for (size_t i = 0; i < road.size(); i += size_t(stride)) n.road += !(sdf.distance(R * road[i] + pose.head<2>()) <= margin);
-    for (const Eigen::Vector2d& c : curbs) n.curbs += !(std::abs(sdf.distance(R * c + pose.head<2>())) <= curbBand);
+    for (const Eigen::Vector2d& c : curbs)
+      if (!(std::abs(sdf.cellDistance(R * c + pose.head<2>())) <= curbBand) && ++n.curbs > limit.curbs) return n;
+    for (size_t i = 0; i < road.size(); i += size_t(stride))
+      if (!(sdf.cellDistance(R * road[i] + pose.head<2>()) <= margin) && ++n.road > limit.road) return n;
     return n;
   }
   int sampled() const { return int((road.size() + size_t(stride) - 1) / size_t(stride)); }
@@ -56,8 +59,11 @@ OffCounter::Counts lowest(const OffCounter::Counts& a, const OffCounter::Counts&
 // allowed above the lowest met on the way: doubling from `first`, then three bisections.
 double plausibleReach(const OffCounter& off, const Eigen::Vector3d& estimate, const Eigen::Vector3d& unit, double first,
                       double limit, const Allowed& allowed) {
-  const auto at = [&](double s) { return off(offsetPose(estimate, unit * s)); };
-  OffCounter::Counts best = at(0.0);
+  OffCounter::Counts best{std::numeric_limits<int>::max() / 2, std::numeric_limits<int>::max() / 2};
+  const auto at = [&](double s) {
+    return off(offsetPose(estimate, unit * s), {best.road + allowed.road, best.curbs + allowed.curbs});
+  };
+  best = at(0.0);
   double inside = 0.0, outside = kInfinity;
   for (double s = first; s <= limit; s *= 2.0) {
     const OffCounter::Counts c = at(s);
@@ -120,7 +126,7 @@ Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const
   OffCounter off{sdf, road, {}, std::max(1, o.evidenceStride), o.evidenceMargin, o.evidenceCurbBand};
   const Eigen::Rotation2Dd R(estimate.z());
   for (const Eigen::Vector2d& c : curbs)
-    if (std::abs(sdf.distance(R * c + estimate.head<2>())) <= o.evidenceCurbBand) off.curbs.push_back(c);
+    if (std::abs(sdf.cellDistance(R * c + estimate.head<2>())) <= o.evidenceCurbBand) off.curbs.push_back(c);
   if (int(off.curbs.size()) < o.minCurbPoints) off.curbs.clear();
   const Allowed allowed{std::max(o.evidenceMinPoints, int(std::ceil(o.evidenceShare * off.sampled()))),
                         std::max(o.evidenceMinPoints, int(std::ceil(o.evidenceCurbShare * double(off.curbs.size()))))};
