@@ -79,7 +79,7 @@ struct MatchOptions {
   double evidenceMargin = 0.2;          // metres beyond the boundary before a point counts as off
   double evidenceCurbBand = 0.5;        // curb points (on the boundary at the estimate) count as off beyond this
   double evidenceCurbShare = 0.2;       // share of those that may leave
-  int evidenceStride = 8;               // every n-th road point is counted
+  int evidenceStride = 4;               // every n-th road point is counted
   double evidenceMaxOffset = 3.2;       // metres searched along and across the heading ...
   double evidenceMaxYawDeg = 6.4;       // ... and in yaw; beyond: unbounded
   double evidenceKappa = 3.0;           // half-width = kappa sigma (tuning family, README: HD-map priors)

@@ -17,6 +17,7 @@
 #include "engine/map/hd_map.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/match/map_matcher.h"
+#include "matcher_map.h"
 #include "ring_road_points.h"
 
 namespace hdprior {
@@ -24,14 +25,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-HdMap buildMap(VectorMap vm) {
-  HdMapOptions o;
-  o.ndtCellSizes = MatchOptions{}.cellSizes;
-  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
-}
-
-HdMap intersection() { return buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)})); }
-HdMap corridor() { return buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)})); }
+HdMap intersection() { return test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)})); }
+HdMap corridor() { return test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)})); }
 
 // Road points as a thinned sweep gives them: a 0.4 m lattice within 30 m of the vehicle (at
 // `truth`), kept where it lands on the drivable area; in the vehicle's frame.

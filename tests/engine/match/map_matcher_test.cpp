@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "../map/synthetic_maps.h"
+#include "matcher_map.h"
 #include "ring_road_points.h"
 #include "engine/error.h"
 #include "engine/geom/se2.h"
@@ -24,16 +25,10 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-HdMap buildMap(VectorMap vm) {
-  HdMapOptions o;
-  o.ndtCellSizes = MatchOptions{}.cellSizes;
-  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
-}
-
 using test::ringRoadPoints;
 
 TEST(MapMatcher, CorridorFixesLateralAndYawAndReportsTheAlongDirectionUnobservable) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
   const Eigen::Vector3d truth(3.0, 1.5, 0.05);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
   MapMatcher matcher(map, {});
@@ -58,7 +53,7 @@ TEST(MapMatcher, CorridorFixesLateralAndYawAndReportsTheAlongDirectionUnobservab
 }
 
 TEST(MapMatcher, IntersectionConvergesInAllThreeDirections) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
   MatchOptions o;
@@ -87,7 +82,7 @@ TEST(MapMatcher, IntersectionConvergesInAllThreeDirections) {
 }
 
 TEST(MapMatcher, CovarianceIsTheInverseOfTheKeptInformation) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   MapMatcher matcher(map, {});
   const MatchResult r = matcher.match(ringRoadPoints(map.drivable(), truth), truth);
@@ -97,7 +92,7 @@ TEST(MapMatcher, CovarianceIsTheInverseOfTheKeptInformation) {
 }
 
 TEST(MapMatcher, RejectsPoorFitsFewPointsAndInconsistentEstimates) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
   {
@@ -126,7 +121,7 @@ TEST(MapMatcher, RejectsPoorFitsFewPointsAndInconsistentEstimates) {
 }
 
 TEST(MapMatcher, RecordsTheIterationPathFromStartToEstimate) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
   const Eigen::Vector3d start = offsetPose(truth, {1.0, -1.5, 3.0 * kDeg});
@@ -151,7 +146,7 @@ TEST(MapMatcher, RecordsTheIterationPathFromStartToEstimate) {
 }
 
 TEST(MapMatcher, TimeBudgetIsRespected) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   MatchOptions o;
   o.timeBudgetMs = 1e-6;
@@ -169,7 +164,7 @@ TEST(MapMatcher, PredictionChi2UsesTheVehicleFrame) {
 }
 
 TEST(MapMatcher, RejectsBadOptionsAndMissingGrids) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-10, -5, 10, 5)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-10, -5, 10, 5)}));
   MatchOptions o;
   o.cellSizes = {3.0};  // the map has no 3 m grid
   EXPECT_THROW(MapMatcher(map, o), Error);
@@ -185,7 +180,7 @@ TEST(MapMatcher, RejectsBadOptionsAndMissingGrids) {
 }
 
 TEST(MapMatcher, PclBackendRunsOnTheSamePoints) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-60, -5, 60, 5), test::rectangle(-6, -60, 6, 60)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-60, -5, 60, 5), test::rectangle(-6, -60, 6, 60)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   MatchOptions o;
   o.backend = MatchBackend::PclNdt;
@@ -200,7 +195,7 @@ TEST(MapMatcher, PclBackendRunsOnTheSamePoints) {
 }
 
 TEST(MapMatcher, IsDeterministic) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
   MatchOptions o;
@@ -218,7 +213,7 @@ namespace hdprior {
 // Parked cars hide the left third of a corridor: the region NDT is pulled towards the hidden
 // cells' centres; the right curb, which the lidar does see, puts the estimate back.
 TEST(MapMatcher, CurbsCorrectTheOcclusionBiasOfTheRegionNdt) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
   const Eigen::Vector3d truth(3.0, 0.0, 0.0);
   std::vector<Eigen::Vector2d> points, curb;
   for (const Eigen::Vector2d& p : ringRoadPoints(map.drivable(), truth)) {

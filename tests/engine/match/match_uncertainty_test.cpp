@@ -11,6 +11,7 @@
 #include <Eigen/LU>
 
 #include "../map/synthetic_maps.h"
+#include "matcher_map.h"
 #include "ring_road_points.h"
 #include "engine/geom/se2.h"
 #include "engine/map/hd_map.h"
@@ -21,16 +22,10 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-HdMap buildMap(VectorMap vm) {
-  HdMapOptions o;
-  o.ndtCellSizes = MatchOptions{}.cellSizes;
-  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
-}
-
 // A 10 m corridor seen kerb to kerb: the points pin the lateral place and yaw to a few decimetres
 // and tenths of a degree, and leave the place along the corridor unbounded.
 TEST(MatchUncertainty, AFullySeenCorridorBoundsLateralAndYawButNotAlong) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
   const Eigen::Vector3d truth(3.0, 1.5, 0.05);
   const auto points = test::ringRoadPoints(map.drivable(), truth);
   const Eigen::Vector3d w = plausibleHalfWidths(map.boundaryDistance(), points, {}, truth, MatchOptions{});
@@ -44,7 +39,7 @@ TEST(MatchUncertainty, AFullySeenCorridorBoundsLateralAndYawButNotAlong) {
 // wide street whose far lanes it calls other ground): every pose within metres fits, and the match
 // must not claim otherwise.
 TEST(MatchUncertainty, ANarrowStripInAWideRoadIsReportedUnobservable) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
   const Eigen::Vector3d truth(0.0, 0.0, 0.0);
   std::vector<Eigen::Vector2d> strip;
   for (double x = -30.0; x <= 30.0; x += 0.2)
@@ -65,7 +60,7 @@ TEST(MatchUncertainty, ANarrowStripInAWideRoadIsReportedUnobservable) {
 // Road points along one side of a 40 m road: they bound the pose towards that kerb only, so the
 // lateral place is unbounded; the curb points where the lidar saw that kerb pin it.
 TEST(MatchUncertainty, OneSidedRoadPointsNeedTheCurbToBoundTheLateralPlace) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -20, 150, 20)}));
   const Eigen::Vector3d truth(0.0, 0.0, 0.0);
   std::vector<Eigen::Vector2d> strip, curbs;
   for (int i = 0; i <= 300; ++i) {

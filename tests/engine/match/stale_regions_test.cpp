@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "../map/synthetic_maps.h"
+#include "matcher_map.h"
 #include "ring_road_points.h"
 #include "engine/eval/match_calibration.h"
 #include "engine/geom/se2.h"
@@ -18,18 +19,12 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-HdMap buildMap(VectorMap vm) {
-  HdMapOptions o;
-  o.ndtCellSizes = MatchOptions{}.cellSizes;
-  return HdMap::build(std::move(vm), std::nullopt, o, "synthetic");
-}
-
 TEST(StaleRegions, AreasMissingFromTheMapAreLeftOutAndTheRestStillMatches) {
   // The world: a corridor with a drivable lot on each side (3-4 m of kerb and sidewalk between);
   // the map: the corridor alone.
-  const HdMap world = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-25, 8, 25, 45),
+  const HdMap world = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-25, 8, 25, 45),
                                             test::rectangle(-25, -45, 25, -9)}));
-  const HdMap stale = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
+  const HdMap stale = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
   const Eigen::Vector3d truth(0.0, 0.0, 0.0);
   const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(world.drivable(), truth);
 
@@ -57,7 +52,7 @@ TEST(StaleRegions, AreasMissingFromTheMapAreLeftOutAndTheRestStillMatches) {
 
 // Where the map agrees everywhere nothing is left out.
 TEST(StaleRegions, AnUpToDateMapKeepsEveryPoint) {
-  const HdMap map = buildMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-12, 5, 12, 40)}));
+  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5), test::rectangle(-12, 5, 12, 40)}));
   const Eigen::Vector3d truth(1.0, -0.5, 0.02);
   const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), truth);
   const RegionSelection s = pointsInAgreeingRegions(map.boundaryDistance(), points, points, offsetPose(truth, {0.5, 1.0, 0.02}), MatchOptions{});
