@@ -1,10 +1,13 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 
+#include "engine/eval/match_calibration.h"
 #include "engine/geom/se2.h"
 #include "engine/graph/pose_prior.h"
 #include "engine/odom/odometry.h"
@@ -49,6 +52,13 @@ void drawSubmap(const KeyframeInspection& in) {
   ImGui::Text("to the matcher: %zu road (thinned), %zu curb", in.roadPoints.size(), in.curbPoints.size());
 }
 
+std::string bounded(double v) {
+  if (!std::isfinite(v)) return "free";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", v);
+  return b;
+}
+
 void drawMatch(const KeyframeInspection& in) {
   const MatchResult& r = in.match;
   ImGui::TextColored(statusColor(r.status), "%s", toString(r.status));
@@ -62,6 +72,13 @@ void drawMatch(const KeyframeInspection& in) {
   ImGui::Text("  %.2e  %.2e  %.2e", c(0), c(1), c(2));
   ImGui::Text("sigma x %.3f  y %.3f m  yaw %.3f deg", std::sqrt(r.covariance(0, 0)), std::sqrt(r.covariance(1, 1)),
               std::sqrt(r.covariance(2, 2)) * kDeg);
+  // In the vehicle frame: what the prior claims and what the road points allow ("free": unobservable).
+  const Eigen::Vector3d s = matchErrorSample(r.estimate, r.estimate, r.information).sigma;
+  const Eigen::Vector3d& w = r.evidenceHalfWidths;
+  ImGui::Text("sigma along %s  lat %s m  yaw %s deg", bounded(s.x()).c_str(), bounded(s.y()).c_str(),
+              bounded(s.z() * kDeg).c_str());
+  ImGui::Text("half-widths along %s  lat %s m  yaw %s deg", bounded(w.x()).c_str(), bounded(w.y()).c_str(),
+              bounded(w.z() * kDeg).c_str());
   ImGui::Text("edge constraint eigenvalues %.0f %.0f %.0f", r.eigenvalues(0), r.eigenvalues(1), r.eigenvalues(2));
   ImGui::Text("observable directions: %d of 3", r.observableDirections);
   if (r.observableDirections < 3) ImGui::TextDisabled("  (no information, covariance 0, in the others)");
