@@ -33,8 +33,8 @@ fs::path freshOutputDir(const std::string& name) {
   return dir;
 }
 
-static std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
+std::string readFileText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
@@ -50,8 +50,8 @@ CommandResult runHdprior(const std::string& args) {
   const int raw = std::system(cmd.c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = readFileText(out);
+  r.err = readFileText(err);
   fs::remove(out);
   fs::remove(err);
   return r;

@@ -11,6 +11,8 @@ std::filesystem::path sharedDataDir();
 
 // A fresh, empty directory for one test's outputs, under the build tree.
 std::filesystem::path freshOutputDir(const std::string& name);
+// A whole file as bytes in a string (empty if it cannot be read).
+std::string readFileText(const std::filesystem::path& path);
 
 // Runs the hdprior binary with arguments; returns exit status, captures stdout/stderr.
 struct CommandResult {

@@ -13,13 +13,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> out;
   std::string field;
@@ -31,7 +24,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 // per_log.csv as rows of fields (no field of these logs is quoted but the error, which is last).
 std::vector<std::vector<std::string>> perLogRows(const fs::path& out) {
   std::vector<std::vector<std::string>> rows;
-  for (const std::string& line : split(slurp(out / "per_log.csv"), '\n')) rows.push_back(split(line, ','));
+  for (const std::string& line : split(test::readFileText(out / "per_log.csv"), '\n')) rows.push_back(split(line, ','));
   return rows;
 }
 
@@ -63,7 +56,7 @@ class EvalCommand : public ::testing::Test {
     }
     const fs::path broken = *dir_ / "broken";
     fs::create_directories(broken / "sensors" / "lidar");
-    const std::string poses = slurp(first / "city_SE3_egovehicle.feather");
+    const std::string poses = test::readFileText(first / "city_SE3_egovehicle.feather");
     std::ofstream(broken / "city_SE3_egovehicle.feather", std::ios::binary) << poses.substr(0, poses.size() / 3);
   }
   static void TearDownTestSuite() { delete dir_; }
@@ -109,7 +102,7 @@ TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorke
   ASSERT_EQ(good.size(), 2u);
 
   // The table averages the two good logs.
-  const auto table = split(slurp(out2 / "table.csv"), '\n');
+  const auto table = split(test::readFileText(out2 / "table.csv"), '\n');
   ASSERT_EQ(table.size(), 3u);
   const auto odometry = split(table[1], ',');
   EXPECT_EQ(odometry[0], "odometry");
@@ -118,8 +111,8 @@ TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorke
   EXPECT_NEAR(std::stod(odometry[3]), (std::stod(good[0][odoMean]) + std::stod(good[1][odoMean])) / 2, 2e-6);
   const auto optimized = split(table[2], ',');
   EXPECT_NEAR(std::stod(optimized[5]), (std::stod(good[0][optRmse]) + std::stod(good[1][optRmse])) / 2, 2e-6);
-  EXPECT_NE(slurp(out2 / "table.md").find("average over the 2 logs that went through (of 3; 1 failed)"), std::string::npos);
-  const std::string png = slurp(out2 / "rmse_boxplot.png");
+  EXPECT_NE(test::readFileText(out2 / "table.md").find("average over the 2 logs that went through (of 3; 1 failed)"), std::string::npos);
+  const std::string png = test::readFileText(out2 / "rmse_boxplot.png");
   ASSERT_GT(png.size(), 24u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
   for (const auto& entry : fs::directory_iterator(out2)) EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos);
@@ -135,8 +128,8 @@ TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorke
     if (seconds < rows2[i].size()) rows2[i][seconds].clear();
     EXPECT_EQ(rows1[i], rows2[i]) << "row " << i;
   }
-  EXPECT_EQ(slurp(out1 / "table.csv"), slurp(out2 / "table.csv"));
-  EXPECT_TRUE(slurp(out1 / "rmse_boxplot.png") == png);
+  EXPECT_EQ(test::readFileText(out1 / "table.csv"), test::readFileText(out2 / "table.csv"));
+  EXPECT_TRUE(test::readFileText(out1 / "rmse_boxplot.png") == png);
 }
 
 TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {

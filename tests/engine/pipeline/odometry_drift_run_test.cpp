@@ -17,13 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 nlohmann::json metricsOf(const fs::path& out) {
   std::ifstream in(out / "metrics.json");
   return nlohmann::json::parse(in);
@@ -97,7 +90,7 @@ TEST_F(OdometryDriftRun, DriftedOdometryShowsTheDriftAndIsDeterministic) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("injected odometry drift: scale 0.007, yaw 0.5 deg/100 m"), std::string::npos) << r.out;
   }
-  EXPECT_EQ(slurp(dir / "a" / "odometry.tum"), slurp(dir / "b" / "odometry.tum"));
+  EXPECT_EQ(test::readFileText(dir / "a" / "odometry.tum"), test::readFileText(dir / "b" / "odometry.tum"));
 
   const auto m = metricsOf(dir / "a");
   EXPECT_EQ(m["odometry_drift"]["scale"].get<double>(), 0.007);
@@ -131,7 +124,7 @@ TEST_F(OdometryDriftRun, ZeroDriftIsThePlainRunBitForBit) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out.find("injected"), std::string::npos) << r.out;
   for (const char* f : {"odometry.tum", "optimized.tum"}) {
-    EXPECT_EQ(slurp(dir / "plain" / f), slurp(dir / "zero" / f)) << f;
+    EXPECT_EQ(test::readFileText(dir / "plain" / f), test::readFileText(dir / "zero" / f)) << f;
   }
   const auto plain = metricsOf(dir / "plain"), zero = metricsOf(dir / "zero");
   EXPECT_EQ(plain["optimized"], zero["optimized"]);
