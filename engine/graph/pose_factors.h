@@ -13,7 +13,8 @@ namespace hdprior {
 // find atan2/sqrt by argument-dependent lookup, so this header needs no Ceres). Parameters:
 // a unit quaternion (x, y, z, w: Eigen's order) and a translation per pose.
 
-// Odometry between-factor: r = sqrt(Omega) [2 vec(q_meas^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - t_meas].
+// Odometry between-factor with the odometry's scale error s (a state of its own, see PoseGraphOptions):
+// r = sqrt(Omega) [2 vec(q_meas^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - (1 + s) t_meas].
 struct BetweenFactor {
   Eigen::Quaterniond qMeasured;
   Eigen::Vector3d tMeasured;
@@ -23,16 +24,26 @@ struct BetweenFactor {
       : qMeasured(iTj.rotation()), tMeasured(iTj.translation()), sqrtInformation(sqrtInfo) {}
 
   template <typename T>
-  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, T* residual) const {
+  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, const T* scale, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> Qi(qi), Qj(qj);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Ti(ti), Tj(tj);
     const Eigen::Quaternion<T> qij = Qi.conjugate() * Qj;
     const Eigen::Quaternion<T> qe = qMeasured.cast<T>().conjugate() * qij;
     Eigen::Matrix<T, 6, 1> r;
     r.template head<3>() = T(2.0) * qe.vec();
-    r.template tail<3>() = Qi.conjugate() * (Tj - Ti) - tMeasured.cast<T>();
+    r.template tail<3>() = Qi.conjugate() * (Tj - Ti) - (T(1.0) + scale[0]) * tMeasured.cast<T>();
     Eigen::Map<Eigen::Matrix<T, 6, 1>> out(residual);
     out = sqrtInformation.cast<T>() * r;
+    return true;
+  }
+};
+
+// The odometry's scale error: a random walk from keyframe to keyframe, r = (s_j - s_i) / sigma.
+struct ScaleStep {
+  double sigma;
+  template <typename T>
+  bool operator()(const T* si, const T* sj, T* residual) const {
+    residual[0] = (sj[0] - si[0]) / T(sigma);
     return true;
   }
 };

@@ -1,6 +1,7 @@
 #include "engine/graph/pose_graph.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <ceres/ceres.h>
@@ -14,13 +15,35 @@ struct PoseGraph::Impl {
   ceres::Problem problem;
   std::vector<std::unique_ptr<Eigen::Quaterniond>> q;  // stable addresses for Ceres
   std::vector<std::unique_ptr<Eigen::Vector3d>> t;
+  std::vector<std::unique_ptr<double>> scale;  // the odometry's scale error; one for all (shared) or one per keyframe
   std::vector<bool> hasPrior;
+  double zeroScale = 0.0;  // the scale prior's anchor
   bool firstFixed = false;
 };
 
 PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
-  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0) {
-    throw Error("pose graph options", "priorHuber, maxIterations or incrementalWindow out of range");
+  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0 ||
+      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0)) {
+    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow or the scale sigmas out of range");
+  }
+}
+
+bool PoseGraph::scaleIsState() const { return options_.odometryScaleSigma > 0.0; }
+
+double* PoseGraph::scaleBlock(size_t i) const {
+  const bool shared = !scaleIsState() || options_.odometryScaleSigmaPerSqrtM == 0.0;
+  return impl_->scale[shared ? 0 : i].get();
+}
+
+void PoseGraph::addScaleState() {
+  const bool first = impl_->scale.empty();
+  if (!first && (!scaleIsState() || options_.odometryScaleSigmaPerSqrtM == 0.0)) return;
+  impl_->scale.push_back(std::make_unique<double>(first ? 0.0 : *impl_->scale.back()));
+  impl_->problem.AddParameterBlock(impl_->scale.back().get(), 1);
+  if (first && scaleIsState()) {
+    auto* cost = new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{options_.odometryScaleSigma});
+    impl_->problem.AddResidualBlock(cost, nullptr, &impl_->zeroScale, impl_->scale.back().get());
+    impl_->problem.SetParameterBlockConstant(&impl_->zeroScale);
   }
 }
 
@@ -39,15 +62,21 @@ size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3
   impl_->hasPrior.push_back(false);
   impl_->problem.AddParameterBlock(impl_->q.back()->coeffs().data(), 4, new ceres::EigenQuaternionManifold);
   impl_->problem.AddParameterBlock(impl_->t.back()->data(), 3);
+  addScaleState();
   return timestamps_.size() - 1;
 }
 
 void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information) {
   if (i >= size() || j >= size() || i == j) throw Error("pose graph", "odometry between unknown keyframes");
-  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3>(
+  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1>(
       new BetweenFactor(iTj, sqrtInformation<6>(information)));
   impl_->problem.AddResidualBlock(cost, nullptr, impl_->q[i]->coeffs().data(), impl_->t[i]->data(),
-                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data());
+                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data(), scaleBlock(i));
+  if (scaleBlock(i) != scaleBlock(j)) {
+    const double sigma = options_.odometryScaleSigmaPerSqrtM * std::sqrt(std::max(iTj.translation().norm(), 1e-3));
+    auto* step = new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma});
+    impl_->problem.AddResidualBlock(step, nullptr, scaleBlock(i), scaleBlock(j));
+  }
 }
 
 void PoseGraph::addPrior(size_t i, const PosePrior& prior) {
@@ -77,6 +106,16 @@ SolveSummary PoseGraph::solve(bool incremental) {
       }
     }
   }
+  for (size_t i = 0; i < impl_->scale.size(); ++i) {
+    const bool fixed = !scaleIsState() ||
+                       (incremental && options_.incrementalWindow > 0 && impl_->scale.size() > 1 &&
+                        i + size_t(options_.incrementalWindow) < size());
+    if (fixed) {
+      p.SetParameterBlockConstant(impl_->scale[i].get());
+    } else {
+      p.SetParameterBlockVariable(impl_->scale[i].get());
+    }
+  }
   ceres::Solver::Options o;
   o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   o.max_num_iterations = options_.maxIterations;
@@ -93,6 +132,11 @@ SolveSummary PoseGraph::solve(bool incremental) {
 SE3 PoseGraph::pose(size_t i) const {
   if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
   return makeSE3(*impl_->q[i], *impl_->t[i]);
+}
+
+double PoseGraph::odometryScale(size_t i) const {
+  if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
+  return *scaleBlock(i);
 }
 
 std::vector<SE3> PoseGraph::poses() const {

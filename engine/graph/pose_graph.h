@@ -32,6 +32,15 @@ struct PoseGraphOptions {
   // injected drift widens it (coveringOdometryDrift).
   double odometryTranslationSigmaPerM = 1e-4;  // fraction of the distance
   double odometryRotationSigmaDegPerM = 1e-4;
+  // The odometry's scale error as a state of the graph: every keyframe's odometry step is (1 + s)
+  // times too long, s starting at 0 with this standard deviation (0: no scale state, s = 0) and
+  // wandering by odometryScaleSigmaPerSqrtM * sqrt(metres) from keyframe to keyframe (0: one s for
+  // the whole log). A systematic scale error (0.5-1 % for real lidar odometry) makes the along-track
+  // error grow with the distance; the drift model above treats each step's error as independent,
+  // so where the priors observe the along-track position (a junction, a turn) the graph learns s
+  // and carries the correction on to the straight roads that follow.
+  double odometryScaleSigma = 0.0;
+  double odometryScaleSigmaPerSqrtM = 0.0;
 };
 
 struct SolveSummary {
@@ -67,11 +76,17 @@ class PoseGraph {
   size_t size() const { return timestamps_.size(); }
   SE3 pose(size_t i) const;
   std::vector<SE3> poses() const;
+  // The odometry's scale error s at keyframe i (0 without a scale state).
+  double odometryScale(size_t i) const;
   // Every pose of `trajectory` corrected by the keyframes' correction (optimised * initial^-1),
   // interpolated in time between keyframes and held constant beyond the first/last.
   PoseTrajectory correct(const PoseTrajectory& trajectory) const;
 
  private:
+  bool scaleIsState() const;
+  double* scaleBlock(size_t i) const;
+  void addScaleState();
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   PoseGraphOptions options_;

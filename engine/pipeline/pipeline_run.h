@@ -40,6 +40,7 @@ struct PipelineRun {
   PoseTrajectory optimized;         // with priors: every sweep corrected by the pose graph; else empty
   std::vector<KeyframeMatch> matches;  // with priors: one per keyframe
   std::vector<SE3> optimizedKeyframes;
+  std::vector<double> odometryScales;  // with priors: the graph's estimate of the odometry's scale error per keyframe
   SolveSummary finalSolve;
   std::vector<Eigen::Vector3f> mapPoints;  // voxelised keyframe sweeps at the final poses, city frame
   std::vector<float> mapIntensity;

@@ -88,6 +88,7 @@ json keyframesJson(const PipelineRun& run) {
               {"city_T_ego", poseJson(run.cityTOdom * kf.odomTEgo)}, {"previous_T_this", poseJson(kf.previousTThis)},
               {"relative_covariance_v_w", cov}, {"submap_frames", kf.submapFrames}};
     if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
+    if (k < run.odometryScales.size()) j["odometry_scale_error"] = run.odometryScales[k];
     if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
     if (k < run.matches.size() && run.groundTruth.covers(kf.timestampNs)) {
       const Eigen::Vector3d e = planarError(planarPose(run.groundTruth.at(kf.timestampNs)), run.matches[k].match.estimate);
@@ -118,7 +119,8 @@ json driftJson(const OdometryDrift& d) {
 json driftModelJson(const PoseGraphOptions& g) {
   return {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
           {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
-          {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}};
+          {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
+          {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}};
 }
 
 json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& metrics) {
@@ -139,6 +141,7 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
     m["matches"] = {{"accepted", metrics.matches.accepted}, {"degenerate", metrics.matches.degenerate},
                     {"rejected", metrics.matches.rejected}};
     m["odometry_drift_model"] = driftModelJson(run.graphOptions);
+    if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
                         {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};
   }

@@ -79,11 +79,12 @@ TEST(PoseFactors, BetweenJacobiansMatchCentralDifferences) {
   Eigen::Matrix<double, 6, 6> info = Eigen::Matrix<double, 6, 6>::Identity() * 100.0;
   info(0, 3) = info(3, 0) = 5.0;
   const BetweenFactor f(poseOf(2.0, 0.1, 0.0, 0.05), sqrtInformation<6>(info));
-  ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3> autodiff(new BetweenFactor(f));
-  ceres::NumericDiffCostFunction<BetweenFactor, ceres::CENTRAL, 6, 4, 3, 4, 3> numeric(new BetweenFactor(f));
+  ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1> autodiff(new BetweenFactor(f));
+  ceres::NumericDiffCostFunction<BetweenFactor, ceres::CENTRAL, 6, 4, 3, 4, 3, 1> numeric(new BetweenFactor(f));
   Eigen::Quaterniond qi(poseOf(0, 0, 0, 0.3, 0.02).rotation()), qj(poseOf(0, 0, 0, 0.36, -0.01, 0.02).rotation());
   Eigen::Vector3d ti(1, 2, 3), tj(2.9, 2.8, 3.1);
-  expectJacobiansMatch(autodiff, numeric, {qi.coeffs().data(), ti.data(), qj.coeffs().data(), tj.data()}, 1e-6);
+  double scale = 0.013;
+  expectJacobiansMatch(autodiff, numeric, {qi.coeffs().data(), ti.data(), qj.coeffs().data(), tj.data(), &scale}, 1e-6);
 }
 
 TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
@@ -91,9 +92,15 @@ TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
   const BetweenFactor between(a.inverse() * b, Eigen::Matrix<double, 6, 6>::Identity());
   Eigen::Quaterniond qa(a.rotation()), qb(b.rotation());
   Eigen::Vector3d ta = a.translation(), tb = b.translation();
-  double r6[6];
-  between(qa.coeffs().data(), ta.data(), qb.coeffs().data(), tb.data(), r6);
+  double r6[6], noScaleError = 0.0;
+  between(qa.coeffs().data(), ta.data(), qb.coeffs().data(), tb.data(), &noScaleError, r6);
   const Eigen::Map<Eigen::Matrix<double, 6, 1>> residual6(r6);
+  EXPECT_LT(residual6.norm(), 1e-12);
+  // An odometry 10 % too long: the pose b measured from a at 1.1 times its distance.
+  const BetweenFactor longer(makeSE3(Eigen::Quaterniond((a.inverse() * b).rotation()), 1.1 * (a.inverse() * b).translation()),
+                             Eigen::Matrix<double, 6, 6>::Identity());
+  double tenPercentShort = 1.0 / 1.1 - 1.0;
+  longer(qa.coeffs().data(), ta.data(), qb.coeffs().data(), tb.data(), &tenPercentShort, r6);
   EXPECT_LT(residual6.norm(), 1e-12);
 
   const PriorFactor prior(poseOf(0, 0, 0, 179 * kDeg), Eigen::Matrix4d::Identity());
@@ -310,6 +317,42 @@ TEST(PoseGraph, CorrectsEverySweepByInterpolatingTheKeyframeCorrections) {
   EXPECT_NEAR(corrected.poses()[4].translation().y(), 3.0, 1e-3);
 }
 
+// A straight 200 m drive whose odometry is 1 % too long, with one prior that observes the along-track
+// position (a junction at 60 m) and lateral-only priors elsewhere: the scale state learns the error
+// there and carries the correction to the 140 m after it, where nothing observes the along-track
+// position; without it the along-track error keeps growing.
+double alongErrorAtTheEnd(const PoseGraphOptions& options, double* scale = nullptr) {
+  PoseGraph graph(options);
+  const int n = 101;  // a keyframe every 2 m
+  Matrix6d info = Matrix6d::Zero();
+  info.diagonal() << 1e6, 1e6, 1e6, 1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2);
+  for (int k = 0; k < n; ++k) graph.addKeyframe(int64_t(k) + 1, poseOf(2.02 * k, 0, 0, 0));
+  for (int k = 1; k < n; ++k) graph.addOdometry(size_t(k) - 1, size_t(k), poseOf(2.02, 0, 0, 0), info);
+  for (int k = 5; k < n; k += 5) {
+    PosePrior p;
+    p.pose = poseOf(2.0 * k, 0, 0, 0);
+    const double alongInformation = k == 30 ? 1 / std::pow(0.1, 2) : 0.0;
+    p.information = Eigen::Vector4d(1 / std::pow(0.3 * kDeg, 2), alongInformation, 1 / std::pow(0.1, 2), 100).asDiagonal();
+    graph.addPrior(size_t(k), p);
+  }
+  graph.solve();
+  if (scale) *scale = graph.odometryScale(size_t(n) - 1);
+  return graph.pose(size_t(n) - 1).translation().x() - 200.0;
+}
+
+TEST(PoseGraph, AScaleStateCarriesAnObservedScaleErrorOnToTheRoadAhead) {
+  const double without = alongErrorAtTheEnd({});
+  double shared = 0, wandering = 0;
+  const double withShared = alongErrorAtTheEnd({.odometryScaleSigma = 0.01}, &shared);
+  const double withWandering = alongErrorAtTheEnd({.odometryScaleSigma = 0.01, .odometryScaleSigmaPerSqrtM = 5e-4}, &wandering);
+  std::printf("along-track error at 200 m: %.3f m without a scale state, %.3f m with one (s = %.4f), %.3f m wandering (s = %.4f)\n",
+              without, withShared, shared, withWandering, wandering);
+  EXPECT_GT(std::abs(without), 1.2);
+  EXPECT_LT(std::abs(withShared), 0.1);
+  EXPECT_NEAR(shared, 2.0 / 2.02 - 1.0, 1e-3);  // the odometry's steps are 1 % too long
+  EXPECT_LT(std::abs(withWandering), 0.4);
+}
+
 TEST(PoseGraph, RejectsBadInput) {
   PoseGraph graph;
   graph.addKeyframe(5, SE3::Identity());
@@ -317,6 +360,7 @@ TEST(PoseGraph, RejectsBadInput) {
   EXPECT_THROW(graph.addOdometry(0, 1, SE3::Identity(), Matrix6d::Identity()), Error);
   EXPECT_THROW(graph.addPrior(3, PosePrior{}), Error);
   EXPECT_THROW(PoseGraph({.priorHuber = 0.0}), Error);
+  EXPECT_THROW(PoseGraph({.odometryScaleSigma = -0.01}), Error);
 }
 
 }  // namespace
