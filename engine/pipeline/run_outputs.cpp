@@ -142,6 +142,7 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
                     {"rejected", metrics.matches.rejected}};
     m["odometry_drift_model"] = driftModelJson(run.graphOptions);
     if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
+    m["prior_calibration"] = calibrationJson(metrics.priorCalibration);
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
                         {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};
   }
