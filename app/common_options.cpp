@@ -16,4 +16,19 @@ std::filesystem::path outputFolder(const std::filesystem::path& out) {
   return out;
 }
 
+OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string& sourceOption) {
+  OdometryFileOptions o;
+  for (const char* name : {"odometry-format", "odometry-frame", "odometry-times"}) {
+    if (cl.has(name) && !cl.has(sourceOption)) throw Error(std::string("option --") + name, "needs --" + sourceOption);
+  }
+  if (const auto f = cl.value("odometry-format")) o.format = parseTrajectoryFormat(*f, "option --odometry-format");
+  if (const auto f = cl.value("odometry-frame")) o.frame = parseGivenOdometryFrame(*f, "option --odometry-frame");
+  if (const auto t = cl.value("odometry-times")) o.times = *t;
+  return o;
+}
+
+GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log) {
+  return readGivenOdometry({file, options.format, options.times}, options.frame, log.sweepTimestamps());
+}
+
 }  // namespace hdprior::app

@@ -1,7 +1,10 @@
 #pragma once
 #include <filesystem>
+#include <optional>
 
 #include "app/command_line.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 
 namespace hdprior::app {
@@ -13,5 +16,19 @@ Config configOption(const CommandLine& cl);
 
 // An output folder: returned as given when it does not exist yet or is a folder; throws otherwise.
 std::filesystem::path outputFolder(const std::filesystem::path& out);
+
+// How to read a trajectory file given as the odometry: --odometry-format tum|kitti (default: detected,
+// trajectory_file.h), --odometry-frame first|city (default first) and, for commands that accept
+// it, --odometry-times FILE. Throws Error naming the option for an unknown value, or when they come
+// without `sourceOption` (--odometry, --odometry-dir).
+struct OdometryFileOptions {
+  std::optional<TrajectoryFormat> format;
+  GivenOdometryFrame frame = GivenOdometryFrame::First;
+  std::optional<std::filesystem::path> times;
+};
+OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string& sourceOption);
+
+// The trajectory `file` read as the log's odometry.
+GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log);
 
 }  // namespace hdprior::app

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "app/command_line.h"
@@ -29,7 +30,18 @@ struct Batch {
   Config config;
   PipelineOptions options;
   fs::path out;
+  std::optional<fs::path> odometryDir;  // --odometry-dir: each log's trajectory file
+  OdometryFileOptions odometryFile;
 };
+
+// D/<log id>.tum or D/<log id>.txt; a log with neither (or both) is that log's error.
+fs::path logTrajectoryFile(const fs::path& dir, const std::string& id) {
+  const fs::path tum = dir / (id + ".tum"), txt = dir / (id + ".txt");
+  const bool hasTum = fs::exists(tum), hasTxt = fs::exists(txt);
+  if (hasTum && hasTxt) throw Error(tum.string(), "and " + txt.string() + " both exist: which is the log's odometry?");
+  if (!hasTum && !hasTxt) throw Error(tum.string(), "no trajectory for this log (--odometry-dir needs <log id>.tum or <log id>.txt)");
+  return hasTum ? tum : txt;
+}
 
 // Output folders are named by log id, so two logs with one id would overwrite each other.
 void requireUniqueIds(const std::vector<fs::path>& logs) {
@@ -43,7 +55,9 @@ void requireUniqueIds(const std::vector<fs::path>& logs) {
 LogEvaluation evaluateLog(const Batch& batch, const fs::path& dir) {
   try {
     const ArgoverseLog log(dir);
-    return logEvaluation(log, runAndWriteLog(log, batch.config, batch.options, batch.out / log.id()));
+    PipelineOptions options = batch.options;
+    if (batch.odometryDir) options.givenOdometry = givenOdometryOf(logTrajectoryFile(*batch.odometryDir, log.id()), batch.odometryFile, log);
+    return logEvaluation(log, runAndWriteLog(log, batch.config, options, batch.out / log.id()));
   } catch (const Error& e) {
     LogEvaluation failed;
     failed.id = dir.filename().string();
@@ -110,10 +124,12 @@ render::Image rgba(const RgbImage& im) {
 }  // namespace
 
 int runEval(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "odometry-drift"}, .flags = {"no-prior", "keep-time-budget"},
+  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "odometry-drift", "odometry-dir", "odometry-format", "odometry-frame"},
+                              .flags = {"no-prior", "keep-time-budget"},
                               .minPositional = 1, .maxPositional = 1,
                               .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--keep-time-budget] "
-                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]]",
+                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] [--odometry-dir D "
+                                       "[--odometry-format tum|kitti] [--odometry-frame first|city]]",
                               .shortNames = {{'j', "jobs"}}});
   Batch batch;
   batch.out = outputFolder(cl.required("out"));
@@ -124,6 +140,11 @@ int runEval(const std::vector<std::string>& args) {
   // make a log's result depend on the number of workers and whatever else runs.
   if (!cl.has("keep-time-budget")) batch.config.match.timeBudgetMs = kNoTimeBudgetMs;
   batch.options.priors = !cl.has("no-prior");
+  batch.odometryFile = odometryFileOptions(cl, "odometry-dir");
+  if (const auto d = cl.value("odometry-dir")) {
+    if (!fs::is_directory(*d)) throw Error("option --odometry-dir", "'" + *d + "' is not a folder");
+    batch.odometryDir = *d;
+  }
   const fs::path dir = cl.positional()[0];
   batch.logs = findArgoverseLogs(dir);
   if (batch.logs.empty()) throw Error(dir.string(), "no Argoverse 2 logs under it");

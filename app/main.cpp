@@ -19,8 +19,9 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"info", {hdprior::app::runInfo, "summarise an Argoverse 2 log: hdprior info LOG"}},
       {"export-map", {hdprior::app::runExportMap, "write the HD-map rasters as GeoTIFFs: hdprior export-map LOG --out DIR"}},
       {"snapshot", {hdprior::app::runSnapshot, "draw a frame headless to PNG: hdprior snapshot LOG --frame N --out FILE.png"}},
-      {"run", {hdprior::app::runRun, "odometry + HD-map priors + evaluation: hdprior run LOG --out DIR [--no-prior] [--config FILE] [--odometry-drift S,Y[,P]]"}},
-      {"eval", {hdprior::app::runEval, "every log under DIR, in parallel, and the paper's table over them: hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--odometry-drift S,Y[,P]]"}},
+      {"run", {hdprior::app::runRun, "odometry + HD-map priors + evaluation: hdprior run LOG --out DIR [--no-prior] [--config FILE] [--odometry-drift S,Y[,P]] [--odometry FILE]"}},
+      {"eval", {hdprior::app::runEval, "every log under DIR, in parallel, and the paper's table over them: hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--odometry-drift S,Y[,P]] [--odometry-dir D]"}},
+      {"degrade-trajectory", {hdprior::app::runDegradeTrajectory, "a log's ground truth (or a TUM file) with drift and a random walk: hdprior degrade-trajectory (LOG | FILE.tum) --out FILE [--drift S,Y[,P]] [--random-walk M,DEG] [--seed N]"}},
       {"demo", {hdprior::app::runDemo, "simulate (or reuse) a town log, run with and without priors: hdprior demo [--out DIR] [--town SEED --seconds N]"}},
       {"sim", {hdprior::app::runSim, "simulate an Argoverse 2 log: hdprior sim (--town SEED | --map LOG) --out DIR"}},
       {"match", {hdprior::app::runMatch, "match a frame's road points to the map: hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--config FILE]"}},
@@ -31,7 +32,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
 
 void printUsage(std::FILE* out) {
   std::fprintf(out, "usage: hdprior <command> [options]\ncommands:\n");
-  for (const auto& [name, entry] : commands()) std::fprintf(out, "  %-12s %s\n", name.c_str(), entry.second);
+  for (const auto& [name, entry] : commands()) std::fprintf(out, "  %-18s %s\n", name.c_str(), entry.second);
 }
 
 }  // namespace

@@ -34,21 +34,30 @@ void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetr
     std::printf("; injected odometry drift: scale %g, yaw %g deg/100 m, pitch %g deg/100 m", run.odometryDrift.scale,
                 run.odometryDrift.yawDegPer100m, run.odometryDrift.pitchDegPer100m);
   }
+  if (run.givenOdometry) {
+    std::printf("; odometry from %s (%s, frame %s)", run.givenOdometry->file.c_str(), trajectoryFormatName(run.givenOdometry->format),
+                givenOdometryFrameName(run.givenOdometry->frame));
+  }
   std::printf("; wrote %s\n", out.string().c_str());
 }
 
 }  // namespace
 
 int runRun(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "odometry-drift"}, .flags = {"no-prior"}, .minPositional = 1,
-                              .maxPositional = 1,
+  const CommandLine cl(args, {.valued = {"out", "config", "odometry-drift", "odometry", "odometry-format", "odometry-frame",
+                                         "odometry-times"},
+                              .flags = {"no-prior"}, .minPositional = 1, .maxPositional = 1,
                               .usage = "hdprior run LOG --out DIR [--no-prior] [--config FILE] "
-                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]]"});
+                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] [--odometry FILE "
+                                       "[--odometry-format tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]"});
   const std::filesystem::path out = outputFolder(cl.required("out"));
   const Config config = configOption(cl);
+  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
   const ArgoverseLog log(cl.positional()[0]);
+  PipelineOptions options{.priors = !cl.has("no-prior")};
+  if (const auto file = cl.value("odometry")) options.givenOdometry = givenOdometryOf(*file, odometryFile, log);
   ProgressBar bar("run");
-  const EvaluatedRun r = runAndWriteLog(log, config, {.priors = !cl.has("no-prior")}, out, [&](size_t d, size_t t) { bar(d, t); });
+  const EvaluatedRun r = runAndWriteLog(log, config, options, out, [&](size_t d, size_t t) { bar(d, t); });
   printSummary(log, r.run, r.metrics, out);
   return 0;
 }

@@ -39,4 +39,13 @@ PoseGraphOptions coveringOdometryDrift(const PoseGraphOptions& options, const Od
   return out;
 }
 
+PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses, const OdometryDrift& drift) {
+  PoseGraphOptions out = options;
+  if (givenPoses) {
+    out.odometryTranslationSigmaPerM = options.givenOdometryTranslationSigmaPerM;
+    out.odometryRotationSigmaDegPerM = options.givenOdometryRotationSigmaDegPerM;
+  }
+  return coveringOdometryDrift(out, drift);
+}
+
 }  // namespace hdprior

@@ -24,4 +24,9 @@ Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& prev
 // sigma per metre >= |scale|, rotation sigma per metre >= max(|yaw|, |pitch|) / 100 degrees.
 PoseGraphOptions coveringOdometryDrift(const PoseGraphOptions& options, const OdometryDrift& drift);
 
+// The drift model the graph uses for an odometry source: the built-in odometry's per-metre sigmas, or
+// for poses given in a file (`givenPoses`) graph.given_odometry_*_per_m in their place; then covering
+// an injected drift (coveringOdometryDrift).
+PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses, const OdometryDrift& drift);
+
 }  // namespace hdprior

@@ -32,6 +32,11 @@ struct PoseGraphOptions {
   // injected drift widens it (coveringOdometryDrift).
   double odometryTranslationSigmaPerM = 1e-4;  // fraction of the distance
   double odometryRotationSigmaDegPerM = 1e-4;
+  // The same for a trajectory given in a file (hdprior run --odometry), in place of the two above,
+  // which describe the built-in odometry: it carries no covariance of its own, and other lidar
+  // odometries drift 0.5-1 % of the distance (the premise), so 1 % and 1 deg per 100 m.
+  double givenOdometryTranslationSigmaPerM = 0.01;
+  double givenOdometryRotationSigmaDegPerM = 0.01;
   // The odometry's scale error as a state of the graph: every keyframe's odometry step is (1 + s)
   // times too long, s starting at 0 with this standard deviation (0: no scale state, s = 0) and
   // wandering by odometryScaleSigmaPerSqrtM * sqrt(metres) from keyframe to keyframe (0: one s for

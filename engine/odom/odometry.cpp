@@ -31,13 +31,14 @@ std::vector<Eigen::Vector3f> transformed(const std::vector<Eigen::Vector3f>& poi
 
 }  // namespace
 
-Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyframes)
+Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyframes, PoseTrajectory given)
     : options_(options),
       keyframeOptions_(keyframes),
       edgeMap_(options.localMap),
       planeMap_(options.localMap),
       lastEdges_(options.localMap),
-      lastPlanes_(options.localMap) {
+      lastPlanes_(options.localMap),
+      given_(std::move(given)) {
   if (options_.deskew.mode != "none" && options_.deskew.mode != "constant_velocity") {
     throw Error("odometry.deskew.mode", "must be \"none\" or \"constant_velocity\", not \"" + options_.deskew.mode + "\"");
   }
@@ -70,6 +71,10 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
   if (sweep.points.empty()) throw Error("sweep " + std::to_string(sweep.timestampNs), "has zero points");
   if (!frames_.empty() && sweep.timestampNs <= frames_.back().timestampNs) {
     throw Error("sweep " + std::to_string(sweep.timestampNs), "is not after the previous sweep");
+  }
+  if (!given_.empty()) {
+    const SE3 pose = given_.at(sweep.timestampNs);
+    return addFrame(givenFrame(sweep.timestampNs, pose), pose);
   }
   const bool deskew = options_.deskew.mode == "constant_velocity";
   const RegistrationOptions& ro = options_.registration;
@@ -121,6 +126,22 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
     lastEdges_.add(edgesInMap);
     lastPlanes_.add(planesInMap);
   }
+  return addFrame(frame, registered);
+}
+
+// A given pose's frame: no covariance; for deskewing, the motion since the previous sweep as the
+// sweep's constant velocity.
+OdometryFrame Odometry::givenFrame(int64_t timestampNs, const SE3& pose) const {
+  OdometryFrame frame;
+  frame.timestampNs = timestampNs;
+  if (!frames_.empty()) {
+    frame.periodNs = double(timestampNs - frames_.back().timestampNs);
+    frame.sweepMotion = registered_.back().inverse() * pose;
+  }
+  return frame;
+}
+
+const OdometryFrame& Odometry::addFrame(OdometryFrame frame, const SE3& registered) {
   frame.odomTEgo = reportedPose(registered);
   frames_.push_back(frame);
   registered_.push_back(registered);

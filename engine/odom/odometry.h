@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/geom/pose_trajectory.h"
 #include "engine/geom/se3.h"
 #include "engine/io/lidar_sweep.h"
 #include "engine/odom/keyframe.h"
@@ -26,9 +27,12 @@ struct OdometryFrame {
 // LOAM-style lidar odometry: deskew, features per ring, scan-to-map registration against a bounded
 // local map, keyframes. Feed sweeps in time order. With options.drift the reported poses (frames,
 // keyframes) carry that drift; the registration and its local map keep the undegraded estimate.
+// With `given` poses (odom_T_ego at every sweep timestamp: a trajectory from another system, see
+// given_odometry.h) nothing is registered: each sweep takes its given pose, with no covariance, and
+// keyframes, drift and deskewing work on them as on registered ones.
 class Odometry {
  public:
-  explicit Odometry(const OdometryOptions& options = {}, const KeyframeOptions& keyframes = {});
+  explicit Odometry(const OdometryOptions& options = {}, const KeyframeOptions& keyframes = {}, PoseTrajectory given = {});
 
   const OdometryFrame& registerSweep(const LidarSweep& sweep);
 
@@ -38,10 +42,13 @@ class Odometry {
   std::vector<Eigen::Vector3f> deskewed(const LidarSweep& sweep, size_t frame) const;
   size_t localMapPoints() const { return edgeMap_.pointCount() + planeMap_.pointCount(); }
   size_t localMapVoxels() const { return edgeMap_.voxelCount() + planeMap_.voxelCount(); }
+  bool givenPoses() const { return !given_.empty(); }
 
  private:
   SE3 predictedMotion(int64_t timestampNs, double& periodNs) const;
   SE3 reportedPose(const SE3& registered) const;
+  OdometryFrame givenFrame(int64_t timestampNs, const SE3& pose) const;
+  const OdometryFrame& addFrame(OdometryFrame frame, const SE3& registered);
   void updateKeyframes();
 
   OdometryOptions options_;
@@ -51,6 +58,7 @@ class Odometry {
   std::vector<OdometryFrame> frames_;
   std::vector<SE3> registered_;  // odom_T_ego of every frame as registered (frames_ carry the drift, if any)
   std::vector<Keyframe> keyframes_;
+  PoseTrajectory given_;
 };
 
 }  // namespace hdprior

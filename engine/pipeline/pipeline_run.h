@@ -11,6 +11,7 @@
 #include "engine/geom/pose_trajectory.h"
 #include "engine/graph/pose_graph.h"
 #include "engine/io/argoverse_log.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/odom/odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/prior_stage.h"
@@ -22,6 +23,9 @@ class HdMap;
 struct PipelineOptions {
   bool priors = true;     // false: lidar odometry alone
   double mapVoxel = 0.2;  // metres, of the global map
+  // The odometry's poses from another system's trajectory instead of the lidar odometry's
+  // registration (hdprior run --odometry FILE); the rest of the pipeline is the same.
+  std::optional<GivenOdometry> givenOdometry;
 };
 
 struct StageTimes {
@@ -47,6 +51,7 @@ struct PipelineRun {
   StageTimes times;
   size_t maxLocalMapPoints = 0;
   OdometryDrift odometryDrift;   // injected into the odometry's reported poses (config odometry.drift)
+  std::optional<GivenOdometry> givenOdometry;  // where the odometry's poses came from, when from a file
   PoseGraphOptions graphOptions;  // with priors: the graph's options in use (drift model covering odometryDrift)
 
   bool hasPriors() const { return !optimized.empty(); }
@@ -59,7 +64,8 @@ std::unique_ptr<HdMap> loadPriorMap(const ArgoverseLog& log, const Config& confi
 
 // A Session run to the end and finished. progress(done, total) is called after each sweep. Throws Error naming the sweep file for a bad or
 // empty sweep, or the log when it has no sweeps, its poses do not cover the first sweep, or (with
-// priors) its map lacks what the priors need.
+// priors) its map lacks what the priors need, or the given odometry's file when it does not cover
+// the sweeps.
 PipelineRun runPipeline(const ArgoverseLog& log, const Config& config, const PipelineOptions& options = {},
                         const std::function<void(size_t, size_t)>& progress = {});
 

@@ -28,11 +28,11 @@ Eigen::Vector3d planarBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 
 }  // namespace
 
-PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom)
-    : map_(map), config_(config), cityTOdom_(cityTOdom), matcher_(std::make_unique<MapMatcher>(map, config.match)),
-      graph_(std::make_unique<PoseGraph>(config.graph)) {
+PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses)
+    : map_(map), config_(config), cityTOdom_(cityTOdom), givenPoses_(givenPoses),
+      matcher_(std::make_unique<MapMatcher>(map, config.match)), graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
-  config_.graph = coveringOdometryDrift(config.graph, config.odometry.drift);
+  config_.graph = odometryDriftModel(config.graph, givenPoses_, config.odometry.drift);
 }
 
 PriorStage::~PriorStage() = default;
@@ -96,7 +96,7 @@ SolveSummary PriorStage::finish() {
 
 void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph) {
   config_.prior = prior;
-  config_.graph = coveringOdometryDrift(graph, config_.odometry.drift);
+  config_.graph = odometryDriftModel(graph, givenPoses_, config_.odometry.drift);
   auto rebuilt = std::make_unique<PoseGraph>(graph);
   for (size_t k = 0; k < matches_.size(); ++k) {
     const Keyframe& kf = odometry.keyframes()[k];

@@ -55,8 +55,9 @@ struct PriorStageTimes {
 // and an incremental, warm-started solve. finish() is the final batch solve.
 class PriorStage {
  public:
-  // cityTOdom places the odometry frame in the city (the first ground-truth pose).
-  PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom);
+  // cityTOdom places the odometry frame in the city (the first ground-truth pose). givenPoses: the
+  // odometry's poses come from a file, and the graph takes its drift model (odometryDriftModel).
+  PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses = false);
   ~PriorStage();
   PriorStage(const PriorStage&) = delete;
   PriorStage& operator=(const PriorStage&) = delete;
@@ -71,7 +72,7 @@ class PriorStage {
   const std::vector<KeyframeMatch>& matches() const { return matches_; }
   const PoseGraph& graph() const { return *graph_; }
   const PriorStageTimes& times() const { return times_; }
-  // The graph options in use: the configuration's, with the drift model covering odometry.drift.
+  // The graph options in use: the configuration's, with the source's drift model covering odometry.drift.
   const PoseGraphOptions& graphOptions() const { return config_.graph; }
 
  private:
@@ -80,6 +81,7 @@ class PriorStage {
   const HdMap& map_;
   Config config_;
   SE3 cityTOdom_;
+  bool givenPoses_;
   std::unique_ptr<MapMatcher> matcher_;
   std::unique_ptr<PoseGraph> graph_;
   std::vector<KeyframeMatch> matches_;

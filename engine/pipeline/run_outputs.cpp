@@ -123,6 +123,14 @@ json driftModelJson(const PoseGraphOptions& g) {
           {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}};
 }
 
+// Where the odometry's poses came from: the built-in lidar odometry or a trajectory file.
+json odometrySourceJson(const PipelineRun& run) {
+  if (!run.givenOdometry) return {{"kind", "lidar"}};
+  const GivenOdometry& g = *run.givenOdometry;
+  return {{"kind", "file"}, {"file", g.file}, {"format", trajectoryFormatName(g.format)}, {"frame", givenOdometryFrameName(g.frame)},
+          {"poses", g.trajectory.size()}};
+}
+
 json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& metrics) {
   json aligned = json::array();
   for (const auto& e : metrics.odometryAligned) aligned.push_back(evaluationJson(e));
@@ -133,6 +141,7 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
             {"timing", timingJson(run.times, run.estimate.size())},
             {"max_local_map_points", run.maxLocalMapPoints},
             {"map_points", run.mapPoints.size()},
+            {"odometry_source", odometrySourceJson(run)},
             {"odometry_drift", driftJson(run.odometryDrift)},
             {"odometry", evaluationJson(metrics.odometry)},
             {"odometry_aligned", aligned}};

@@ -46,11 +46,13 @@ std::vector<SubmapLabel> pointLabels(const LabelledSubmap& submap) {
 }  // namespace
 
 Session::Session(const ArgoverseLog& log, const HdMap* map, const Config& config, const PipelineOptions& options)
-    : log_(log), map_(options.priors ? map : nullptr), config_(config) {
+    : log_(log), map_(options.priors ? map : nullptr), config_(config), givenOdometry_(options.givenOdometry) {
   checkLog(log);
   cityTOdom_ = log.cityTEgo().at(log.sweepTimestamps().front());
-  odometry_ = std::make_unique<Odometry>(config.odometry, config.keyframes);
-  if (map_) priors_ = std::make_unique<PriorStage>(*map_, config, cityTOdom_);
+  odometry_ = std::make_unique<Odometry>(
+      config.odometry, config.keyframes,
+      givenOdometry_ ? givenOdometryAtSweeps(*givenOdometry_, log.sweepTimestamps(), cityTOdom_) : PoseTrajectory{});
+  if (map_) priors_ = std::make_unique<PriorStage>(*map_, config, cityTOdom_, givenOdometry_.has_value());
   groundTruth_ = groundTruthAt(log);
 }
 
@@ -170,6 +172,7 @@ PipelineRun Session::finish(double mapVoxel) {
   run.groundTruth = groundTruth_;
   run.estimate = odometryTrajectory();
   run.odometryDrift = config_.odometry.drift;
+  run.givenOdometry = givenOdometry_;
   if (priors_) {
     run.graphOptions = priors_->graphOptions();
     run.finalSolve = optimize();

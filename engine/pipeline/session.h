@@ -23,8 +23,10 @@ class HdMap;
 // the worker is done).
 class Session {
  public:
-  // map == nullptr or !options.priors: lidar odometry alone. Throws Error for a log without sweeps or
-  // whose poses do not cover the first sweep (the start), or a map without what the priors need.
+  // map == nullptr or !options.priors: lidar odometry alone. options.givenOdometry: the odometry
+  // takes its poses from that trajectory (givenOdometryAtSweeps). Throws Error for a log without
+  // sweeps or whose poses do not cover the first sweep (the start), a map without what the priors
+  // need, or a given trajectory that does not cover the sweeps.
   Session(const ArgoverseLog& log, const HdMap* map, const Config& config, const PipelineOptions& options = {});
   ~Session();
   Session(const Session&) = delete;
@@ -74,6 +76,7 @@ class Session {
   const ArgoverseLog& log_;
   const HdMap* map_;
   Config config_;
+  std::optional<GivenOdometry> givenOdometry_;
   SE3 cityTOdom_;
   std::unique_ptr<Odometry> odometry_;
   std::unique_ptr<PriorStage> priors_;

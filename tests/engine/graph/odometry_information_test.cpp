@@ -89,4 +89,25 @@ TEST(OdometryInformation, InjectedDriftWidensTheModelToCoverIt) {
   EXPECT_EQ(yaw.priorHuber, PoseGraphOptions{}.priorHuber);
 }
 
+// A trajectory from a file is judged by its own drift model (graph.given_odometry_*), not by the
+// built-in odometry's; an injected drift still widens it.
+TEST(OdometryInformation, GivenPosesTakeTheirOwnDriftModel) {
+  PoseGraphOptions o;
+  o.givenOdometryTranslationSigmaPerM = 0.005;
+  o.givenOdometryRotationSigmaDegPerM = 0.02;
+  const PoseGraphOptions builtIn = odometryDriftModel(o, false, {});
+  EXPECT_EQ(builtIn.odometryTranslationSigmaPerM, PoseGraphOptions{}.odometryTranslationSigmaPerM);
+  const PoseGraphOptions given = odometryDriftModel(o, true, {});
+  EXPECT_EQ(given.odometryTranslationSigmaPerM, 0.005);
+  EXPECT_EQ(given.odometryRotationSigmaDegPerM, 0.02);
+  const PoseGraphOptions drifted = odometryDriftModel(o, true, {0.007, 0.5, 0.0});
+  EXPECT_DOUBLE_EQ(drifted.odometryTranslationSigmaPerM, 0.007);
+  EXPECT_DOUBLE_EQ(drifted.odometryRotationSigmaDegPerM, 0.02);
+  // Without a covariance of its own, a file's relative pose is weighted by the model alone.
+  const SE3 step = makeSE3(Eigen::Quaterniond::Identity(), Eigen::Vector3d(2, 0, 0));
+  const Matrix6d information = odometryInformation(Matrix6d::Zero(), step, given);
+  EXPECT_NEAR(1.0 / std::sqrt(information(3, 3)), 0.01, 1e-12);  // 0.005 per m over 2 m
+  EXPECT_NEAR(1.0 / std::sqrt(information(0, 0)), 0.04 * std::numbers::pi / 180.0, 1e-12);
+}
+
 }  // namespace hdprior

@@ -96,4 +96,17 @@ TEST(Config, OdometryDriftAndTheGraphsDriftModel) {
             "my.json: graph.odometry_translation_sigma_per_m = -0.1 is out of range [0.0, 10.0]");
 }
 
+TEST(Config, GivenOdometrysDriftModel) {
+  const Config defaults;
+  EXPECT_DOUBLE_EQ(defaults.graph.givenOdometryTranslationSigmaPerM, 0.01);
+  EXPECT_DOUBLE_EQ(defaults.graph.givenOdometryRotationSigmaDegPerM, 0.01);
+  const Config c = parseConfig(R"({"graph": {"given_odometry_translation_sigma_per_m": 0.005,
+                                             "given_odometry_rotation_sigma_deg_per_m": 0.002}})", "c.json");
+  EXPECT_DOUBLE_EQ(c.graph.givenOdometryTranslationSigmaPerM, 0.005);
+  EXPECT_DOUBLE_EQ(c.graph.givenOdometryRotationSigmaDegPerM, 0.002);
+  EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
+  EXPECT_EQ(errorOf(R"({"graph": {"given_odometry_rotation_sigma_deg_per_m": 200}})"),
+            "my.json: graph.given_odometry_rotation_sigma_deg_per_m = 200 is out of range [0.0, 180.0]");
+}
+
 }  // namespace hdprior
