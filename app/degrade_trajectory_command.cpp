@@ -34,7 +34,7 @@ PoseTrajectory sourceTrajectory(const fs::path& in) {
 }  // namespace
 
 int runDegradeTrajectory(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "drift", "random-walk", "seed", "format"}, .minPositional = 1, .maxPositional = 1,
+  const CommandLine cl(args, {.valued = {"out", "drift", "random-walk", "seed", "format"}, .flags = {}, .minPositional = 1, .maxPositional = 1,
                               .usage = "hdprior degrade-trajectory (LOG | FILE.tum) --out FILE [--drift SCALE,YAW_DEG_PER_100M"
                                        "[,PITCH_DEG_PER_100M]] [--random-walk SIGMA_M,SIGMA_DEG] [--seed N] [--format tum|kitti]"});
   const fs::path out = cl.required("out");

@@ -21,10 +21,10 @@ Eigen::Matrix<double, 6, 1> odometryDriftVariances(double distance, const PoseGr
 }
 
 Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& previousTThis, const PoseGraphOptions& options) {
+  const Matrix6d own = options.odometryCovariance ? relativeCovariance : Matrix6d::Zero();
   // [v, w] -> [w, v]: the between-factor's residual is [rotation, translation].
   Matrix6d covariance;
-  covariance << relativeCovariance.bottomRightCorner<3, 3>(), relativeCovariance.bottomLeftCorner<3, 3>(),
-      relativeCovariance.topRightCorner<3, 3>(), relativeCovariance.topLeftCorner<3, 3>();
+  covariance << own.bottomRightCorner<3, 3>(), own.bottomLeftCorner<3, 3>(), own.topRightCorner<3, 3>(), own.topLeftCorner<3, 3>();
   covariance.diagonal() += odometryDriftVariances(previousTThis.translation().norm(), options);
   // A registration that found too little overlap reports no covariance: trust it weakly.
   if (!(covariance.diagonal().minCoeff() > 0.0) || !covariance.allFinite()) return Matrix6d::Identity() * 1e-2;

@@ -16,7 +16,8 @@ namespace hdprior {
 Eigen::Matrix<double, 6, 1> odometryDriftVariances(double distance, const PoseGraphOptions& options);
 
 // The information of an odometry between-factor i_T_j = previousTThis: its covariance (body [v, w],
-// zero when the source has none) reordered to [rotation, translation], plus the drift model. A
+// zero when the source has none; left out when !options.odometryCovariance) reordered to
+// [rotation, translation], plus the drift model. A
 // covariance that is not positive on the diagonal or not finite gives a weak 1e-2 * identity.
 Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& previousTThis, const PoseGraphOptions& options);
 

@@ -46,6 +46,10 @@ struct PoseGraphOptions {
   // and carries the correction on to the straight roads that follow.
   double odometryScaleSigma = 0.0;
   double odometryScaleSigmaPerSqrtM = 0.0;
+  // false: the odometry's own relative covariance (the built-in odometry's registration
+  // covariances) is left out and the drift model alone weighs it, as it weighs a trajectory file;
+  // shows that the two sources then give the same graph (README, Bring your own odometry).
+  bool odometryCovariance = true;
 };
 
 struct SolveSummary {

@@ -25,7 +25,7 @@ struct PipelineOptions {
   double mapVoxel = 0.2;  // metres, of the global map
   // The odometry's poses from another system's trajectory instead of the lidar odometry's
   // registration (hdprior run --odometry FILE); the rest of the pipeline is the same.
-  std::optional<GivenOdometry> givenOdometry;
+  std::optional<GivenOdometry> givenOdometry = std::nullopt;
 };
 
 struct StageTimes {

@@ -110,4 +110,14 @@ TEST(OdometryInformation, GivenPosesTakeTheirOwnDriftModel) {
   EXPECT_NEAR(1.0 / std::sqrt(information(0, 0)), 0.04 * std::numbers::pi / 180.0, 1e-12);
 }
 
+// Leaving the odometry's own covariance out weighs the built-in odometry as a file is weighed.
+TEST(OdometryInformation, OwnCovarianceCanBeLeftOut) {
+  PoseGraphOptions o;
+  const SE3 step = makeSE3(Eigen::Quaterniond::Identity(), Eigen::Vector3d(2, 0, 0));
+  const Matrix6d own = Matrix6d::Identity() * 1e-6;
+  EXPECT_FALSE(odometryInformation(own, step, o).isApprox(odometryInformation(Matrix6d::Zero(), step, o)));
+  o.odometryCovariance = false;
+  EXPECT_TRUE(odometryInformation(own, step, o).isApprox(odometryInformation(Matrix6d::Zero(), step, o), 0.0));
+}
+
 }  // namespace hdprior

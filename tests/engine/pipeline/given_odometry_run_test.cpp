@@ -1,0 +1,236 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "engine/io/kitti_trajectory.h"
+#include "engine/io/tum_trajectory.h"
+#include "engine/sim/log_writer.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json metricsOf(const fs::path& out) {
+  std::ifstream in(out / "metrics.json");
+  return nlohmann::json::parse(in);
+}
+
+double ateRmse(const nlohmann::json& m, const char* trajectory) { return m[trajectory]["ate_translation_m"]["rmse"].get<double>(); }
+double lateralRmse(const nlohmann::json& m, const char* trajectory) { return m[trajectory]["ate_lateral_m"]["rmse"].get<double>(); }
+
+struct PoseDifference {
+  double max = 0, rms = 0;
+};
+
+// Position differences of two trajectories with the same timestamps.
+PoseDifference difference(const fs::path& a, const fs::path& b) {
+  const PoseTrajectory ta = readTum(a), tb = readTum(b);
+  EXPECT_EQ(ta.timestamps(), tb.timestamps()) << a << " " << b;
+  PoseDifference d;
+  for (size_t i = 0; i < std::min(ta.size(), tb.size()); ++i) {
+    const double e = (ta.poses()[i].translation() - tb.poses()[i].translation()).norm();
+    d.max = std::max(d.max, e);
+    d.rms += e * e;
+  }
+  d.rms = std::sqrt(d.rms / double(std::max<size_t>(1, ta.size())));
+  return d;
+}
+
+std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1); }
+
+}  // namespace
+
+// `hdprior run LOG --odometry FILE` on a short simulated town drive (town 1, 6 s, ~45 m). Runs have
+// no wall-clock match budget, so they are compared without timing noise.
+class GivenOdometryRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    SimulationOptions sim;
+    sim.townSeed = 1;
+    sim.seconds = 6.0;
+    // ctest runs each test in its own process, in parallel: one folder per process.
+    sim.outDir = test::freshOutputDir("given_run_" + std::to_string(::getpid()));
+    log_ = new fs::path(simulateLog(sim).dir);
+    untimed_ = new fs::path(sim.outDir / "untimed.json");
+    std::ofstream(*untimed_) << R"({"match": {"time_budget_ms": 1000000}})";
+    // The built-in odometry's drift model for the file (what a plain run's graph uses), and for the
+    // built-in odometry that model alone, without its registration covariances (a file has none).
+    sameModel_ = new fs::path(sim.outDir / "same_model.json");
+    std::ofstream(*sameModel_) << R"({"match": {"time_budget_ms": 1000000},
+      "graph": {"given_odometry_translation_sigma_per_m": 1e-4, "given_odometry_rotation_sigma_deg_per_m": 1e-4,
+                "odometry_covariance": false}})";
+  }
+  static void TearDownTestSuite() {
+    delete log_;
+    delete untimed_;
+    delete sameModel_;
+    log_ = untimed_ = sameModel_ = nullptr;
+  }
+  static test::CommandResult run(const fs::path& out, const std::string& options, const fs::path* config = untimed_) {
+    return test::runHdprior("run " + log_->string() + " --out " + out.string() + " --config " + config->string() + " " + options);
+  }
+  static fs::path* log_;
+  static fs::path* untimed_;
+  static fs::path* sameModel_;
+};
+fs::path* GivenOdometryRun::log_ = nullptr;
+fs::path* GivenOdometryRun::untimed_ = nullptr;
+fs::path* GivenOdometryRun::sameModel_ = nullptr;
+
+// The built-in odometry's own odometry.tum, given back, is the same odometry: without priors the
+// final trajectory to the file's micrometre rounding, with priors the same odometry, keyframes and
+// match statuses. With priors the optimised trajectory is the plain run's within 1 mm when the plain
+// run weighs its odometry as a file's is weighed (the drift model alone, "graph.odometry_covariance":
+// false): a TUM file does not carry the registration covariances the built-in odometry adds to its
+// between-factors. With them (the default) the two differ by about 1-2 mm (README, Bring your own
+// odometry).
+TEST_F(GivenOdometryRun, TheBuiltInOdometrysOwnTrajectoryReproducesThePlainRun) {
+  const fs::path dir = test::freshOutputDir("given_run_reproduce");
+  ASSERT_EQ(run(dir / "plain", "").status, 0);
+  ASSERT_EQ(run(dir / "plain_model_alone", "", sameModel_).status, 0);
+  const fs::path file = dir / "plain" / "odometry.tum";
+  EXPECT_EQ(test::readFileText(file), test::readFileText(dir / "plain_model_alone" / "odometry.tum"));
+
+  const auto noPrior = run(dir / "no_prior", "--no-prior --odometry " + file.string());
+  ASSERT_EQ(noPrior.status, 0) << noPrior.err;
+  EXPECT_NE(noPrior.out.find("odometry from " + file.string() + " (tum, frame first)"), std::string::npos) << noPrior.out;
+  const PoseDifference final = difference(file, dir / "no_prior" / "odometry.tum");
+  EXPECT_LT(final.max, 1e-5);  // the file's 1e-6 m rounding, well under 1 mm
+
+  const auto priors = run(dir / "priors", "--odometry " + file.string(), sameModel_);
+  ASSERT_EQ(priors.status, 0) << priors.err;
+  EXPECT_LT(difference(file, dir / "priors" / "odometry.tum").max, 1e-5);
+  const auto plain = metricsOf(dir / "plain"), alone = metricsOf(dir / "plain_model_alone"), given = metricsOf(dir / "priors");
+  EXPECT_EQ(given["keyframes"], plain["keyframes"]);
+  EXPECT_EQ(given["matches"], alone["matches"]);
+  EXPECT_EQ(given["odometry_source"]["kind"], "file");
+  EXPECT_EQ(given["odometry_source"]["frame"], "first");
+  EXPECT_EQ(plain["odometry_source"]["kind"], "lidar");
+  EXPECT_EQ(given["odometry_drift_model"], alone["odometry_drift_model"]);
+
+  const PoseDifference same = difference(dir / "plain_model_alone" / "optimized.tum", dir / "priors" / "optimized.tum");
+  const PoseDifference withCovariances = difference(dir / "plain" / "optimized.tum", dir / "priors" / "optimized.tum");
+  std::printf("given the built-in odometry.tum back: final (no priors) max %.4f mm; optimized vs the plain run weighing its "
+              "odometry by the drift model alone: max %.4f mm, rms %.4f mm; vs the default plain run (registration "
+              "covariances too): max %.3f mm, rms %.3f mm (ATE rmse %.4f m plain, %.4f m given)\n",
+              final.max * 1e3, same.max * 1e3, same.rms * 1e3, withCovariances.max * 1e3, withCovariances.rms * 1e3,
+              ateRmse(plain, "optimized"), ateRmse(given, "optimized"));
+  EXPECT_LT(same.max, 1e-3);
+  EXPECT_LT(withCovariances.max, 5e-3);
+}
+
+// KITTI (one line per sweep, or with a times file) and TUM give the same odometry; the ground truth
+// given in the city frame is the ground truth.
+TEST_F(GivenOdometryRun, KittiLinesAndTheCityFrame) {
+  const fs::path dir = test::freshOutputDir("given_run_kitti");
+  ASSERT_EQ(run(dir / "plain", "--no-prior").status, 0);
+  const PoseTrajectory odometry = readTum(dir / "plain" / "odometry.tum");
+  std::ofstream(dir / "poses.txt") << formatKitti(odometry.poses());
+  std::ofstream(dir / "times.txt") << formatTimes(odometry.timestamps());
+  auto r = run(dir / "kitti", "--no-prior --odometry " + (dir / "poses.txt").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(kitti, frame first)"), std::string::npos) << r.out;
+  EXPECT_LT(difference(dir / "plain" / "odometry.tum", dir / "kitti" / "odometry.tum").max, 1e-5);
+  r = run(dir / "timed", "--no-prior --odometry " + (dir / "poses.txt").string() + " --odometry-format kitti --odometry-times " +
+                             (dir / "times.txt").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_LT(difference(dir / "plain" / "odometry.tum", dir / "timed" / "odometry.tum").max, 1e-5);
+
+  r = run(dir / "city", "--no-prior --odometry-frame city --odometry " + (dir / "plain" / "groundtruth.tum").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_LT(metricsOf(dir / "city")["odometry"]["ate_translation_m"]["max"].get<double>(), 1e-5);
+  EXPECT_EQ(metricsOf(dir / "city")["odometry_source"]["frame"], "city");
+}
+
+// The ground truth degraded as real lidar odometry drifts (0.7 % scale, 0.5 deg/100 m yaw,
+// 0.3 deg/100 m pitch, a seeded random walk) is refined by the priors. On this 45 m straight drive
+// the priors see the lateral error, not the scale (README); the accuracy targets of issue 17 are
+// measured on longer drives in the README.
+TEST_F(GivenOdometryRun, DegradedGroundTruthIsRefined) {
+  const fs::path dir = test::freshOutputDir("given_run_degraded");
+  const fs::path file = dir / "degraded.tum";
+  const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() +
+                                     " --drift 0.007,0.5,0.3 --random-walk 0.002,0.002 --seed 3");
+  ASSERT_EQ(made.status, 0) << made.err;
+  const auto again = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + (dir / "again.tum").string() +
+                                      " --drift 0.007,0.5,0.3 --random-walk 0.002,0.002 --seed 3");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(test::readFileText(file), test::readFileText(dir / "again.tum"));
+
+  const auto r = run(dir / "run", "--odometry " + file.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto m = metricsOf(dir / "run");
+  const double given = ateRmse(m, "odometry"), optimized = ateRmse(m, "optimized");
+  std::printf("degraded ground truth: ATE rmse given %.3f m -> with priors %.3f m; lateral %.3f -> %.3f m; matches %s\n", given,
+              optimized, lateralRmse(m, "odometry"), lateralRmse(m, "optimized"), m["matches"].dump().c_str());
+  EXPECT_GT(given, 0.1);  // the drift is there
+  EXPECT_TRUE(std::isfinite(optimized));
+  EXPECT_LT(optimized, given);
+  EXPECT_LT(lateralRmse(m, "optimized"), 0.5 * lateralRmse(m, "odometry"));
+  EXPECT_DOUBLE_EQ(m["odometry_drift_model"]["translation_sigma_per_m"].get<double>(), 0.01);  // the file's default model
+}
+
+// Every kind of bad trajectory input: one line on stderr naming the file (and the line), exit 2,
+// nothing written. On the shared real log (two sweeps at 315966265.259836 and .360032 s).
+TEST(GivenOdometryBadInput, EachIsOneLineExit2AndWritesNothing) {
+  const fs::path dir = test::freshOutputDir("given_bad");
+  const std::string log = test::sharedLog().string();
+  const std::string pose = " 5172.6 2300.5 69.0 0 0 0 1\n";
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string good = write("good.tum", "315966265.2 " + pose.substr(1) + "315966265.4" + pose);
+  const std::string kittiLine = "1 0 0 0 0 1 0 0 0 0 1 0\n";
+  const struct {
+    std::string options, message;
+  } cases[] = {
+      {"--odometry " + write("one.tum", "315966265.2" + pose), "one.tum: 1 pose: at least 2 are needed"},
+      {"--odometry " + write("late.tum", "315966265.262" + pose + "315966265.4" + pose),
+       "late.tum: the poses span 315966265.262000000 to 315966265.400000000 s but sweep 0 is at 315966265.259836000 s, 2.164 ms "
+       "before the first pose"},
+      {"--odometry " + write("early.tum", "315966265.2" + pose + "315966265.3" + pose), "early.tum: the poses span"},
+      {"--odometry " + write("order.tum", "315966265.2" + pose + "315966265.4" + pose + "315966265.3" + pose),
+       "order.tum:3: timestamp 315966265.300000000 s is not after the previous pose's 315966265.400000000 s"},
+      {"--odometry " + write("nan.tum", "# header\n315966265.2" + pose + "315966265.4 5172.6 nan 69.0 0 0 0 1\n"),
+       "nan.tum:3: ty is not finite (nan)"},
+      {"--odometry " + write("inf.tum", "315966265.2 inf 2300.5 69.0 0 0 0 1\n315966265.4" + pose), "inf.tum:1: tx is not finite (inf)"},
+      {"--odometry " + write("quat.tum", "315966265.2" + pose + "315966265.4 5172.6 2300.5 69.0 0 0 0.1 1.02\n"),
+       "quat.tum:2: the quaternion's norm is 1.02489 (more than 1e-3 from unit length)"},
+      {"--odometry " + write("fields.tum", "315966265.2" + pose + "315966265.4 5172.6 2300.5 69.0 0 0 1\n"),
+       "fields.tum:2: expected 8 fields 'timestamp tx ty tz qx qy qz qw', found 7"},
+      {"--odometry " + write("count.txt", kittiLine + kittiLine + kittiLine),
+       "count.txt: 3 poses but 2 sweeps in the log (a KITTI file has one pose per line, in order)"},
+      {"--odometry " + write("kfields.kitti", kittiLine + "1 0 0 0 0 1 0 0 0 0 1\n"), "kfields.kitti:2: expected 12 fields"},
+      {"--odometry " + write("what.txt", "1 2 3\n"), "what.txt:1: 3 fields: neither TUM (8) nor KITTI (12)"},
+      {"--odometry " + (dir / "missing.tum").string(), "missing.tum"},
+      {"--odometry " + good + " --odometry-format euroc", "option --odometry-format: must be tum or kitti, not 'euroc'"},
+      {"--odometry " + good + " --odometry-frame map", "option --odometry-frame: must be first or city, not 'map'"},
+      {"--odometry-frame city", "option --odometry-frame: needs --odometry"},
+      {"--odometry " + good + " --odometry-times " + write("times.txt", "1\n2\n"), "times.txt: a times file is only for KITTI poses"},
+      {"--odometry " + write("k.txt", kittiLine + kittiLine) + " --odometry-times " + write("t3.txt", "1\n2\n3\n"),
+       "k.txt: 2 poses but 3 timestamps in " + (dir / "t3.txt").string()},
+  };
+  for (const auto& c : cases) {
+    for (const char* priors : {"--no-prior", ""}) {
+      const fs::path out = dir / "out";
+      const auto r = test::runHdprior("run " + log + " --out " + out.string() + " " + priors + " " + c.options);
+      EXPECT_EQ(r.status, 2) << c.options;
+      EXPECT_EQ(oneLine(r.err), r.err) << r.err;
+      EXPECT_EQ(r.err.rfind("hdprior run: ", 0), 0u) << r.err;
+      EXPECT_NE(r.err.find(c.message), std::string::npos) << c.options << "\n -> " << r.err;
+      EXPECT_FALSE(fs::exists(out)) << c.options;
+    }
+  }
+  // The good file runs.
+  const auto r = test::runHdprior("run " + log + " --out " + (dir / "ok").string() + " --no-prior --odometry " + good);
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace hdprior
