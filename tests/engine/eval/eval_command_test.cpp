@@ -132,6 +132,55 @@ TEST_F(EvalCommand, RunsEveryLogReportsTheBrokenOneAndIsTheSameForOneAndTwoWorke
   EXPECT_TRUE(test::readFileText(out1 / "rmse_boxplot.png") == png);
 }
 
+// --odometry-dir: each log's trajectory from D/<log id>.tum (here town 1's ground truth, given in
+// the city frame); town 2 has no file: its row carries the error and one stderr line names it.
+TEST_F(EvalCommand, OdometryDirGivesEachLogItsTrajectoryAndReportsALogWithout) {
+  const fs::path odometry = dir_->parent_path() / (dir_->filename().string() + "_odometry");
+  fs::create_directories(odometry);
+  std::string town1;
+  for (const auto& entry : fs::directory_iterator(*dir_ / "town1")) town1 = entry.path().filename().string();
+  ASSERT_FALSE(town1.empty());
+  const auto made = test::runHdprior("degrade-trajectory " + (*dir_ / "town1" / town1).string() + " --out " +
+                                     (odometry / (town1 + ".tum")).string());
+  ASSERT_EQ(made.status, 0) << made.err;
+
+  const fs::path out = dir_->parent_path() / (dir_->filename().string() + "_given");
+  const auto r = test::runHdprior("eval " + dir_->string() + " --out " + out.string() + " -j 2 --no-prior --odometry-dir " +
+                                  odometry.string() + " --odometry-frame city");
+  EXPECT_EQ(r.status, 2) << r.err;
+  size_t errors = 0;
+  for (const std::string& line : split(r.err, '\n')) {
+    if (line.rfind("hdprior eval: ", 0) != 0) continue;
+    ++errors;
+    if (line.find("log broken: ") != std::string::npos) continue;
+    EXPECT_NE(line.find(": no trajectory for this log (--odometry-dir needs <log id>.tum or <log id>.txt)"), std::string::npos) << line;
+  }
+  EXPECT_EQ(errors, 2u) << r.err;  // town 2 and the broken log
+
+  const auto rows = perLogRows(out);
+  ASSERT_EQ(rows.size(), 4u);
+  const size_t error = column(rows[0], "error"), odoMax = column(rows[0], "odometry_ate_max_m");
+  size_t good = 0;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i][0] == town1) {
+      ++good;
+      EXPECT_TRUE(field(rows[i], error).empty()) << field(rows[i], error);
+      EXPECT_LT(std::stod(field(rows[i], odoMax)), 1e-5);  // the ground truth, given
+    } else if (rows[i][0] != "broken") {
+      EXPECT_NE(field(rows[i], error).find(rows[i][0] + ".tum: no trajectory for this log"), std::string::npos) << field(rows[i], error);
+      EXPECT_FALSE(fs::exists(out / rows[i][0]));
+    }
+  }
+  EXPECT_EQ(good, 1u);
+
+  // A folder that is not there: one line, nothing written.
+  const auto bad = test::runHdprior("eval " + dir_->string() + " --out " + (out.string() + "_x") + " --odometry-dir " +
+                                    (odometry / "missing").string());
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("option --odometry-dir: '" + (odometry / "missing").string() + "' is not a folder"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(out.string() + "_x"));
+}
+
 TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
   const fs::path dir = test::freshOutputDir("eval_options");
   const fs::path empty = dir / "empty", out = dir / "out";
