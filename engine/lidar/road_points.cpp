@@ -14,10 +14,12 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
+  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxCamber >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
     throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap, seed or lane settings out of range (laneObjectHeight must be above laneStep)");
   }
 }
+
+constexpr double kDenseSpacing = 0.5;  // metres between consecutive points of a ring
 
 // The ground points of one ring in azimuth order, and the walk over them.
 class RingWalk {
@@ -85,14 +87,36 @@ class RingWalk {
     }
   }
 
+  // b agrees with the walk's road points within `window` behind it once the road's cross slope there
+  // (camber) is taken out: b's height is compared with each point's raised along that slope.
   bool agrees(const Eigen::Vector3d& b, const std::vector<size_t>& path) const {
+    // Only where the ring samples the surface densely: across a gap (a ring grazing a kerb) a step
+    // would hide in the slope.
+    const bool dense = (b.head<2>() - points_[members_[path.back()]].head<2>()).norm() <= kDenseSpacing;
+    const double slope = dense ? crossSlope(path) : 0.0;
     for (auto it = path.rbegin(); it != path.rend(); ++it) {
       const Eigen::Vector3d& a = points_[members_[*it]];
       const double distance = (b.head<2>() - a.head<2>()).norm();
       if (it != path.rbegin() && distance > o_.window) break;
-      if (std::abs(b.z() - a.z()) > o_.maxStep + o_.stepPerMetre * distance) return false;
+      if (std::abs(b.z() - a.z() - slope * distance) > o_.maxStep + o_.stepPerMetre * distance) return false;
     }
     return true;
+  }
+
+  // The walk's height gain per metre over its last `window` metres, within +-maxCamber (a kerb's face
+  // climbed in small steps must not become a slope that lets its top through).
+  double crossSlope(const std::vector<size_t>& path) const {
+    if (o_.maxCamber <= 0.0 || path.size() < 2) return 0.0;
+    const Eigen::Vector3d& last = points_[members_[path.back()]];
+    for (auto it = path.rbegin() + 1; it != path.rend(); ++it) {
+      const Eigen::Vector3d& a = points_[members_[*it]];
+      const double distance = (last.head<2>() - a.head<2>()).norm();
+      if (distance >= o_.window || it + 1 == path.rend()) {
+        if (distance < 0.5 * o_.window) return 0.0;  // too short a run to tell a slope
+        return std::clamp((last.z() - a.z()) / distance, -o_.maxCamber, o_.maxCamber);
+      }
+    }
+    return 0.0;
   }
 
   std::span<const Eigen::Vector3d> points_;

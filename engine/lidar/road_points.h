@@ -18,7 +18,9 @@ struct RoadPointOptions {
   double groundZ = -0.32;          // road level under the ego origin
   double maxRange = 40.0;          // metres from the origin
   double maxStep = 0.05;           // height change allowed between consecutive ground points ...
-  double stepPerMetre = 0.01;      // ... plus this much per metre between them
+  double stepPerMetre = 0.01;      // ... plus this much per metre between them, ...
+  double maxCamber = 0.04;         // ... after the road's cross slope over the window (up to this) is taken out;
+                                   // design standards: 1.5-2.5 %, up to 4 % (0: heights compared level)
   double maxGap = 5.0;             // a longer gap along the ring ends the walk, metres
   double window = 3.0;             // the step test covers the walk's road points this far back
   int maxSkipped = 3;              // this many consecutive points off the road height end the walk

@@ -101,6 +101,7 @@ Sections sectionsOf(Config& c) {
         {"max_range", &rp.maxRange, 0, 1000},
         {"max_step", &rp.maxStep, 0, 10},
         {"step_per_metre", &rp.stepPerMetre, 0, 10},
+        {"max_camber", &rp.maxCamber, 0, 0.5},
         {"max_gap", &rp.maxGap, 0, 1000},
         {"window", &rp.window, 0, 1000},
         {"max_skipped", &rp.maxSkipped, 0, 10000},

@@ -1,5 +1,5 @@
-// Acceptance on the real shared log: matching the sweep's road points to the drivable area
-// from a grid of start offsets around the ground-truth pose.
+// Acceptance on the real shared log: matching the sweep's road points and curbs (as the pipeline and
+// `hdprior match` do) to the drivable area from a grid of start offsets around the ground-truth pose.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,14 +33,16 @@ GridOutcome runGrid(MatchBackend backend, size_t sweepIndex, bool print) {
   const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
   const SE3 truth3 = log.cityTEgo().at(log.sweepTimestamps()[sweepIndex]);
   const Eigen::Vector3d truth = planarPose(truth3);
-  const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*log.sweep(sweepIndex), levelRotation(truth3));
+  const auto sweep = log.sweep(sweepIndex);
+  const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
+  const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
   MapMatcher matcher(map, options);
   GridOutcome g;
   for (double along : {-1.0, 0.0, 1.0}) {
     for (double lateral : {-1.5, -0.75, 0.0, 0.75, 1.5}) {
       for (double yawDeg : {-3.0, 0.0, 3.0}) {
         const Eigen::Vector3d start = offsetPose(truth, {along, lateral, yawDeg * kDeg});
-        const MatchResult r = matcher.match(points, start);
+        const MatchResult r = matcher.match(points.road, start, points.curb);
         const Eigen::Vector3d e = planarError(truth, r.estimate);
         const bool ok = std::abs(e.y()) < 0.25 && std::abs(e.z()) < 0.5 * kDeg;
         ++g.starts;
@@ -59,9 +61,9 @@ GridOutcome runGrid(MatchBackend backend, size_t sweepIndex, bool print) {
       }
     }
   }
-  std::printf("%s sweep %zu, %zu road points: %d / %d starts within 0.25 m lateral and 0.5 deg; along-road error mean %.3f "
+  std::printf("%s sweep %zu, %zu road points, %zu curb points: %d / %d starts within 0.25 m lateral and 0.5 deg; along-road error mean %.3f "
               "max %.3f m; max lateral %.3f m, max yaw %.3f deg\n",
-              backend == MatchBackend::Ndt2d ? "ndt2d" : "pcl", sweepIndex, points.size(), g.converged, g.starts,
+              backend == MatchBackend::Ndt2d ? "ndt2d" : "pcl", sweepIndex, points.road.size(), points.curb.size(), g.converged, g.starts,
               g.sumAlong / g.starts, g.maxAlong, g.maxLateral, g.maxYawDeg);
   return g;
 }
