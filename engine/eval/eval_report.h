@@ -14,7 +14,8 @@ namespace hdprior {
 std::string perLogCsv(const std::vector<LogEvaluation>& logs);
 
 // table.md / table.csv: the paper's table, a row per trajectory (odometry, with HD-map priors),
-// columns mean / median / rmse / std / max (metres) averaged over the logs that went through.
+// columns mean / median / rmse / std / max (metres) averaged over the logs that went through. When
+// none did, table.md says so and shows n/a; table.csv leaves those fields empty (missing values).
 std::string summaryMarkdown(const EvalSummary& summary);
 std::string summaryCsv(const EvalSummary& summary);
 

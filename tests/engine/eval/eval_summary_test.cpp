@@ -106,6 +106,19 @@ TEST(EvalReport, TablesStateTheAveraging) {
   EXPECT_EQ(rows[1].rfind("odometry,2,1,1.500000,3.000000,4.500000,6.000000,7.500000,", 0), 0u) << rows[1];
 }
 
+// Every log failed: no average is 0.000; table.md says no log went through and shows n/a,
+// table.csv leaves the statistics empty (missing values to a CSV reader).
+TEST(EvalReport, WhenNoLogWentThroughTheTablesShowNoAverage) {
+  const EvalSummary s = summarizeLogs({failedLog("a", "x: broken"), failedLog("b", "y: broken")});
+  const std::string md = summaryMarkdown(s);
+  EXPECT_NE(md.find("No log went through (2 of 2 failed; per_log.csv has each one's error)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| odometry | 0 | n/a | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("0.000"), std::string::npos) << md;
+  const auto rows = lines(summaryCsv(s));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1], "odometry,0,2,,,,,,no log went through");
+}
+
 TEST(EvalReport, BoxPlotOfTheSuccessfulLogs) {
   const RgbImage im = rmseBoxPlot({okLog("a", 1, true), failedLog("b", "e"), okLog("c", 2, true)});
   EXPECT_EQ(im.width, 720);
