@@ -96,7 +96,8 @@ void SessionRunner::exportMap(const std::filesystem::path& file, double voxel) {
   start("writing the map", [this, file, voxel] {
     ensureSession();
     const PoseTrajectory optimized = session_->optimizedTrajectory();
-    const GlobalMap map = buildGlobalMap(log_, session_->odometry(), optimized.empty() ? session_->odometryTrajectory() : optimized, voxel);
+    const GlobalMap map = buildGlobalMap([s = session_.get()](size_t f) { return s->frameSweep(f); }, session_->odometry(),
+                                         optimized.empty() ? session_->odometryTrajectory() : optimized, voxel);
     writePly(file, map.points, map.intensity);
     progress_ = 1.0f;
     lastJob_ = "wrote " + file.string() + " (" + std::to_string(map.points.size()) + " points)";

@@ -159,8 +159,11 @@ std::optional<size_t> TuningBench::keyframeAtFrame(size_t frame) {
   const auto& keyframes = session->odometry().keyframes();
   size_t best = 0;
   for (size_t k = 0; k < keyframes.size(); ++k) {
-    const auto distance = [frame](size_t f) { return f > frame ? f - frame : frame - f; };
-    if (distance(keyframes[k].frame) < distance(keyframes[best].frame)) best = k;
+    const auto distance = [&](size_t k) {
+      const size_t f = session->sweepOfFrame(keyframes[k].frame);
+      return f > frame ? f - frame : frame - f;
+    };
+    if (distance(k) < distance(best)) best = k;
   }
   return best;
 }

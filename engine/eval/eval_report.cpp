@@ -93,7 +93,7 @@ void forEachRow(const EvalSummary& s, const std::function<void(const char*, cons
 }  // namespace
 
 std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
-  std::vector<std::string> header = {"log_id", "path", "sweeps", "path_length_m"};
+  std::vector<std::string> header = {"log_id", "path", "sweeps", "skipped_sweeps", "path_length_m"};
   for (const char* t : {"odometry", "optimized"}) {
     for (const char* c : {"ate_mean_m", "ate_median_m", "ate_rmse_m", "ate_std_m", "ate_max_m", "lateral_rmse_m",
                           "rpe10_percent", "rpe100_percent"}) {
@@ -115,6 +115,7 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
       continue;
     }
     row.push_back(std::to_string(log.sweeps));
+    row.push_back(std::to_string(log.skippedSweeps.size()));
     row.push_back(log.odometry ? number(log.odometry->pathLength, 3) : "");
     appendTrajectory(row, log.odometry);
     appendTrajectory(row, log.optimized);

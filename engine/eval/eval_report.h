@@ -10,6 +10,7 @@ namespace hdprior {
 // The files `hdprior eval` writes, as text (CSV per RFC 4180) or an image; the caller writes them.
 
 // per_log.csv: one row per log, in the given order; a failed log has only its id, path and error.
+// `sweeps` counts the sweeps mapped, `skipped_sweeps` those left out as unreadable.
 // Figures not available (no optimised trajectory, a path shorter than an RPE segment) are empty.
 std::string perLogCsv(const std::vector<LogEvaluation>& logs);
 
