@@ -60,6 +60,7 @@ void SessionRunner::run() {
     lastSolveMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     lastJob_ = "ran " + std::to_string(session_->sweepsDone()) + " sweeps, " +
                std::to_string(session_->odometry().keyframes().size()) + " keyframes";
+    if (!session_->skippedSweeps().empty()) lastJob_ += ", " + std::to_string(session_->skippedSweeps().size()) + " unreadable sweeps skipped";
   });
 }
 

@@ -20,6 +20,7 @@ std::string benchReport(TuningBench& bench) {
   std::snprintf(line, sizeof line, "bench: sweeps %zu/%zu keyframes %zu\n", session->sweepsDone(), session->sweepCount(),
                 session->odometry().keyframes().size());
   out += line;
+  for (const SkippedSweep& s : session->skippedSweeps()) out += "bench: skipped " + s.file.string() + ": " + s.problem + "\n";
   if (const auto& in = bench.inspection()) {
     const MatchResult& r = in->match;
     const double deg = 180.0 / M_PI;
