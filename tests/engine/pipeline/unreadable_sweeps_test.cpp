@@ -13,6 +13,7 @@
 #include "engine/io/argoverse_log.h"
 #include "engine/io/tum_trajectory.h"
 #include "engine/map/hd_map.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/session.h"
 #include "engine/sim/log_writer.h"
 #include "test_data.h"
@@ -171,6 +172,28 @@ TEST_F(UnreadableSweeps, ASessionStepsOverTheBadSweep) {
   const PipelineRun run = session.finish(0.2);
   EXPECT_EQ(run.skippedSweeps.size(), 2u);
   EXPECT_GT(run.mapPoints.size(), 1000u);
+}
+
+// With a given trajectory the odometry frame stays the first sweep's (the file covers it even when
+// the sweep file is broken): here the ground truth, given in the city frame, comes out unchanged.
+TEST_F(UnreadableSweeps, AGivenTrajectoryIsUnmovedByAnUnreadableFirstSweep) {
+  const fs::path dir = copyWithTruncatedSweeps("unreadable_given", {0, 30});
+  const ArgoverseLog log(dir);
+  GivenOdometry given;
+  std::vector<SE3> poses;
+  for (int64_t t : log.sweepTimestamps()) poses.push_back(log.cityTEgo().at(t));
+  given.trajectory = PoseTrajectory(log.sweepTimestamps(), poses, "ground truth");
+  given.frame = GivenOdometryFrame::City;
+  given.file = "ground truth";
+  Session session(log, nullptr, Config{}, {.priors = false, .givenOdometry = given});
+  ASSERT_TRUE(session.run());
+  EXPECT_EQ(session.skippedSweeps().size(), 2u);
+  const PoseTrajectory odometry = session.odometryTrajectory();
+  ASSERT_EQ(odometry.size(), 58u);
+  for (size_t i = 0; i < odometry.size(); ++i) {
+    const int64_t t = odometry.timestamps()[i];
+    EXPECT_LT((odometry.poses()[i].translation() - log.cityTEgo().at(t).translation()).norm(), 1e-6) << "pose " << i;
+  }
 }
 
 }  // namespace hdprior
