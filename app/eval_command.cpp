@@ -97,6 +97,9 @@ std::vector<LogEvaluation> evaluateLogs(const Batch& batch, size_t jobs) {
         results[i] = evaluateLog(batch, batch.logs[i]);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const std::lock_guard lock(mutex);
+        for (const std::string& skipped : results[i].skippedSweeps) {
+          std::fprintf(stderr, "hdprior eval: log %s: warning: skipped %s\n", results[i].id.c_str(), skipped.c_str());
+        }
         std::fprintf(stderr, "[%zu/%zu] %s\n", ++finished, batch.logs.size(), progressLine(results[i], seconds).c_str());
       } catch (...) {
         const std::lock_guard lock(mutex);

@@ -21,8 +21,10 @@ std::string rpeText(const TrajectoryEvaluation& e) {
 
 void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& m, const std::filesystem::path& out) {
   const double s = run.times.pipelineS;
-  std::printf("run %s: %zu sweeps, %zu keyframes, %.1f s (%.1f sweeps/s); ", log.id().c_str(), run.estimate.size(),
-              run.odometry->keyframes().size(), s, s > 0 ? double(run.estimate.size()) / s : 0.0);
+  std::printf("run %s: %zu sweeps", log.id().c_str(), run.estimate.size());
+  if (!run.skippedSweeps.empty()) std::printf(" (%zu unreadable skipped)", run.skippedSweeps.size());
+  std::printf(", %zu keyframes, %.1f s (%.1f sweeps/s); ", run.odometry->keyframes().size(), s,
+              s > 0 ? double(run.estimate.size()) / s : 0.0);
   std::printf("odometry ATE rmse %.3f m, max %.3f m, RPE100 %s", m.odometry.ate.translation.rmse,
               m.odometry.ate.translation.max, rpeText(m.odometry).c_str());
   if (m.optimized) {
@@ -58,6 +60,9 @@ int runRun(const std::vector<std::string>& args) {
   if (const auto file = cl.value("odometry")) options.givenOdometry = givenOdometryOf(*file, odometryFile, log);
   ProgressBar bar("run");
   const EvaluatedRun r = runAndWriteLog(log, config, options, out, [&](size_t d, size_t t) { bar(d, t); });
+  for (const SkippedSweep& s : r.run.skippedSweeps) {
+    std::fprintf(stderr, "hdprior run: warning: skipped %s: %s\n", s.file.string().c_str(), s.problem.c_str());
+  }
   printSummary(log, r.run, r.metrics, out);
   return 0;
 }

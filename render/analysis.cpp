@@ -22,6 +22,14 @@ std::vector<double> translationErrors(const PoseTrajectory& truth, const PoseTra
   return errors;
 }
 
+// Per-pose errors spread over the log's sweeps: NaN at the sweeps the run skipped (unreadable).
+std::vector<double> perSweep(std::vector<double> errors, const std::vector<SkippedSweep>& skipped) {
+  for (const SkippedSweep& s : skipped) {  // in increasing index
+    if (s.index <= errors.size()) errors.insert(errors.begin() + long(s.index), std::numeric_limits<double>::quiet_NaN());
+  }
+  return errors;
+}
+
 }  // namespace
 
 Analysis analysisOf(const Session& session) {
@@ -29,12 +37,12 @@ Analysis analysisOf(const Session& session) {
   a.groundTruth = session.groundTruth();
   a.odometry = session.odometryTrajectory();
   a.optimized = session.optimizedTrajectory();
-  a.odometryError = translationErrors(a.groundTruth, a.odometry);
-  a.optimizedError = translationErrors(a.groundTruth, a.optimized);
+  a.odometryError = perSweep(translationErrors(a.groundTruth, a.odometry), session.skippedSweeps());
+  if (!a.optimized.empty()) a.optimizedError = perSweep(translationErrors(a.groundTruth, a.optimized), session.skippedSweeps());
   const std::vector<SE3> poses = session.keyframePoses();
   const auto& keyframes = session.odometry().keyframes();
   for (size_t k = 0; k < keyframes.size() && k < poses.size(); ++k)
-    a.keyframes.push_back({.keyframe = k, .frame = keyframes[k].frame, .pose = poses[k], .status = std::nullopt});
+    a.keyframes.push_back({.keyframe = k, .frame = session.sweepOfFrame(keyframes[k].frame), .pose = poses[k], .status = std::nullopt});
   for (const KeyframeMatch& m : session.matches())
     if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.match.status;
   return a;

@@ -26,7 +26,8 @@ struct KeyframeMark {
 // `hdprior snapshot` fill it from a Session.
 struct Analysis {
   PoseTrajectory groundTruth, odometry, optimized;     // city_T_ego; empty when not computed
-  std::vector<double> odometryError, optimizedError;   // ATE translation per pose of odometry / optimized (NaN: no truth)
+  std::vector<double> odometryError, optimizedError;   // ATE translation per sweep done of odometry / optimized
+                                                       // (NaN: no truth, or a sweep skipped as unreadable)
   std::vector<KeyframeMark> keyframes;
   std::optional<KeyframeInspection> inspection;        // the selected keyframe
   std::optional<CostLandscape> landscape;              // around the inspection's match estimate

@@ -60,6 +60,7 @@ void SessionRunner::run() {
     lastSolveMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     lastJob_ = "ran " + std::to_string(session_->sweepsDone()) + " sweeps, " +
                std::to_string(session_->odometry().keyframes().size()) + " keyframes";
+    if (!session_->skippedSweeps().empty()) lastJob_ += ", " + std::to_string(session_->skippedSweeps().size()) + " unreadable sweeps skipped";
   });
 }
 
@@ -96,7 +97,8 @@ void SessionRunner::exportMap(const std::filesystem::path& file, double voxel) {
   start("writing the map", [this, file, voxel] {
     ensureSession();
     const PoseTrajectory optimized = session_->optimizedTrajectory();
-    const GlobalMap map = buildGlobalMap(log_, session_->odometry(), optimized.empty() ? session_->odometryTrajectory() : optimized, voxel);
+    const GlobalMap map = buildGlobalMap([s = session_.get()](size_t f) { return s->frameSweep(f); }, session_->odometry(),
+                                         optimized.empty() ? session_->odometryTrajectory() : optimized, voxel);
     writePly(file, map.points, map.intensity);
     progress_ = 1.0f;
     lastJob_ = "wrote " + file.string() + " (" + std::to_string(map.points.size()) + " points)";

@@ -20,6 +20,7 @@ std::string benchReport(TuningBench& bench) {
   std::snprintf(line, sizeof line, "bench: sweeps %zu/%zu keyframes %zu\n", session->sweepsDone(), session->sweepCount(),
                 session->odometry().keyframes().size());
   out += line;
+  for (const SkippedSweep& s : session->skippedSweeps()) out += "bench: skipped " + s.file.string() + ": " + s.problem + "\n";
   if (const auto& in = bench.inspection()) {
     const MatchResult& r = in->match;
     const double deg = 180.0 / M_PI;
@@ -159,8 +160,11 @@ std::optional<size_t> TuningBench::keyframeAtFrame(size_t frame) {
   const auto& keyframes = session->odometry().keyframes();
   size_t best = 0;
   for (size_t k = 0; k < keyframes.size(); ++k) {
-    const auto distance = [frame](size_t f) { return f > frame ? f - frame : frame - f; };
-    if (distance(keyframes[k].frame) < distance(keyframes[best].frame)) best = k;
+    const auto distance = [&](size_t k) {
+      const size_t f = session->sweepOfFrame(keyframes[k].frame);
+      return f > frame ? f - frame : frame - f;
+    };
+    if (distance(k) < distance(best)) best = k;
   }
   return best;
 }

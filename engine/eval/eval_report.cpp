@@ -46,6 +46,10 @@ void appendTrajectory(std::vector<std::string>& row, const std::optional<Traject
 
 std::string averagingLine(const EvalSummary& s) {
   const size_t ok = s.logs - s.failed;
+  if (ok == 0) {
+    return "No log went through (" + std::to_string(s.failed) + " of " + std::to_string(s.logs) +
+           " failed; per_log.csv has each one's error): there is nothing to average (n/a).";
+  }
   return "ATE (m, city frame, every run starting at the first ground-truth pose): each column is the average over the " +
          std::to_string(ok) + (ok == 1 ? " log" : " logs") + " that went through (of " + std::to_string(s.logs) + "; " +
          std::to_string(s.failed) + " failed) of that log's per-sweep statistic.";
@@ -89,7 +93,7 @@ void forEachRow(const EvalSummary& s, const std::function<void(const char*, cons
 }  // namespace
 
 std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
-  std::vector<std::string> header = {"log_id", "path", "sweeps", "path_length_m"};
+  std::vector<std::string> header = {"log_id", "path", "sweeps", "skipped_sweeps", "path_length_m"};
   for (const char* t : {"odometry", "optimized"}) {
     for (const char* c : {"ate_mean_m", "ate_median_m", "ate_rmse_m", "ate_std_m", "ate_max_m", "lateral_rmse_m",
                           "rpe10_percent", "rpe100_percent"}) {
@@ -111,6 +115,7 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
       continue;
     }
     row.push_back(std::to_string(log.sweeps));
+    row.push_back(std::to_string(log.skippedSweeps.size()));
     row.push_back(log.odometry ? number(log.odometry->pathLength, 3) : "");
     appendTrajectory(row, log.odometry);
     appendTrajectory(row, log.optimized);
@@ -133,7 +138,7 @@ std::string summaryMarkdown(const EvalSummary& s) {
   std::string md = averagingLine(s) + "\n\n| trajectory | logs | mean | median | rmse | std | max |\n|---|---:|---:|---:|---:|---:|---:|\n";
   forEachRow(s, [&](const char* name, const ErrorStats& e) {
     md += std::string("| ") + name + " | " + std::to_string(e.count);
-    for (double v : {e.mean, e.median, e.rmse, e.std, e.max}) md += " | " + number(v, 3);
+    for (double v : {e.mean, e.median, e.rmse, e.std, e.max}) md += " | " + (e.count ? number(v, 3) : "n/a");
     md += " |\n";
   });
   if (s.optimized) md += calibrationMarkdown(s);
@@ -143,8 +148,11 @@ std::string summaryMarkdown(const EvalSummary& s) {
 std::string summaryCsv(const EvalSummary& s) {
   std::string csv = csvRow({"trajectory", "logs", "failed_logs", "mean_m", "median_m", "rmse_m", "std_m", "max_m", "averaging"});
   forEachRow(s, [&](const char* name, const ErrorStats& e) {
-    csv += csvRow({name, std::to_string(e.count), std::to_string(s.failed), number(e.mean), number(e.median), number(e.rmse),
-                   number(e.std), number(e.max), "mean over logs of each log's per-sweep ATE statistic"});
+    // Over no log there is no average: empty fields, which CSV readers take as missing values.
+    const auto stat = [&](double v) { return e.count ? number(v) : std::string(); };
+    csv += csvRow({name, std::to_string(e.count), std::to_string(s.failed), stat(e.mean), stat(e.median), stat(e.rmse),
+                   stat(e.std), stat(e.max),
+                   e.count ? "mean over logs of each log's per-sweep ATE statistic" : "no log went through"});
   });
   return csv;
 }

@@ -14,6 +14,7 @@ struct LogEvaluation {
   std::string id;
   std::filesystem::path path;
   size_t sweeps = 0;
+  std::vector<std::string> skippedSweeps;  // "<sweep file>: <problem>" of each sweep the run left out
   std::optional<TrajectoryEvaluation> odometry;
   std::optional<TrajectoryEvaluation> optimized;  // with priors
   size_t matchesAccepted = 0, matchesDegenerate = 0, matchesRejected = 0;

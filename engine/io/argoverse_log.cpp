@@ -27,32 +27,6 @@ std::vector<int64_t> listSweeps(const fs::path& lidarDir) {
   return stamps;
 }
 
-// The single file in `dir` whose name contains all of `parts` and ends with `suffix`.
-fs::path findOne(const fs::path& dir, const std::vector<std::string>& parts, const std::string& suffix,
-                 const char* what) {
-  std::vector<fs::path> found;
-  std::error_code ec;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const bool match = name.size() >= suffix.size() && name.ends_with(suffix) &&
-                       std::all_of(parts.begin(), parts.end(),
-                                   [&](const std::string& p) { return name.find(p) != std::string::npos; });
-    if (match) found.push_back(e.path());
-  }
-  if (found.empty()) throw Error(dir.string(), std::string("no ") + what + " found");
-  if (found.size() > 1) throw Error(dir.string(), std::string("more than one ") + what + " found");
-  return found.front();
-}
-
-// "log_map_archive_<log>____PIT_city_47896.json" -> "PIT".
-std::string cityFromMapName(const fs::path& vectorMap) {
-  const std::string name = vectorMap.filename().string();
-  const size_t start = name.rfind("____");
-  const size_t end = name.find("_city_", start == std::string::npos ? 0 : start);
-  if (start == std::string::npos || end == std::string::npos) return "unknown";
-  return name.substr(start + 4, end - start - 4);
-}
-
 }  // namespace
 
 ArgoverseLog::ArgoverseLog(const fs::path& dir, size_t sweepCacheSize)
@@ -60,16 +34,11 @@ ArgoverseLog::ArgoverseLog(const fs::path& dir, size_t sweepCacheSize)
   std::error_code ec;
   if (!fs::exists(dir, ec)) throw Error(dir.string(), "log directory not found");
   if (!fs::is_directory(dir, ec)) throw Error(dir.string(), "is not a directory");
-  id_ = fs::absolute(dir).lexically_normal().filename().string();
-  if (id_.empty()) id_ = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+  id_ = logIdOfFolder(dir);
   sweepTimestamps_ = listSweeps(dir / "sensors" / "lidar");
   cityTEgo_ = readEgoPoses(dir / "city_SE3_egovehicle.feather");
   calibration_ = readSensorCalibration(dir / "calibration" / "egovehicle_SE3_sensor.feather");
-  const fs::path mapDir = dir / "map";
-  if (!fs::is_directory(mapDir, ec)) throw Error(mapDir.string(), "map folder not found");
-  mapFiles_.vectorMap = findOne(mapDir, {"log_map_archive_"}, ".json", "vector map (log_map_archive_*.json)");
-  mapFiles_.groundHeight = findOne(mapDir, {"_ground_height_surface____"}, ".npy", "ground-height raster (*.npy)");
-  mapFiles_.sim2 = findOne(mapDir, {"___img_Sim2_city"}, ".json", "Sim2 file (*___img_Sim2_city.json)");
+  mapFiles_ = findLogMapFiles(dir);
   city_ = cityFromMapName(mapFiles_.vectorMap);
 }
 

@@ -11,15 +11,9 @@
 #include "engine/geom/pose_trajectory.h"
 #include "engine/io/ego_poses.h"
 #include "engine/io/lidar_sweep.h"
+#include "engine/io/log_map_files.h"
 
 namespace hdprior {
-
-// The map files of a log (Argoverse 2 / TbV layout, folder map/).
-struct LogMapFiles {
-  std::filesystem::path vectorMap;     // log_map_archive_*.json
-  std::filesystem::path groundHeight;  // *_ground_height_surface____<CITY>.npy
-  std::filesystem::path sim2;          // *___img_Sim2_city.json
-};
 
 // An Argoverse 2 sensor / TbV log directory. Opening reads the poses, the calibration and
 // the sweep list; sweeps load lazily into a bounded cache. Thread-safe.

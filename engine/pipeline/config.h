@@ -21,7 +21,8 @@ namespace hdprior {
 //   "road_points": {"ground": {...}, "road": {...}, "thin_cell": 0.1, "submap": false},
 //   "match": {"backend": "ndt2d", "cell_sizes": [4, 2, 1], ...},
 //   "prior": {"ego_height": 0.32, "altitude_sigma": 0.1},
-//   "graph": {"prior_huber": 1.0, ..., "odometry_translation_sigma_per_m": ..., "odometry_rotation_sigma_deg_per_m": ...}
+//   "graph": {"prior_huber": 1.0, ..., "odometry_translation_sigma_per_m": ..., "odometry_rotation_sigma_deg_per_m": ...},
+//   "sweeps": {"max_unreadable_share": 0.05}
 // }
 struct Config {
   OdometryOptions odometry;
@@ -31,6 +32,8 @@ struct Config {
   MatchOptions match;
   PosePriorOptions prior;
   PoseGraphOptions graph;
+  // Unreadable sweeps are skipped; more than this share of the log's sweeps fails the log.
+  double maxUnreadableSweepShare = 0.05;
 };
 
 Config parseConfig(const std::string& jsonText, const std::string& source);

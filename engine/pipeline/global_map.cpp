@@ -6,12 +6,12 @@
 
 namespace hdprior {
 
-GlobalMap buildGlobalMap(const ArgoverseLog& log, const Odometry& odometry, const PoseTrajectory& trajectory, double voxel) {
+GlobalMap buildGlobalMap(const SweepOf& sweepOf, const Odometry& odometry, const PoseTrajectory& trajectory, double voxel) {
   GlobalMap map;
   std::unordered_set<VoxelKey, VoxelKeyHash> occupied;
   // The keyframes' sweeps give the coverage of all sweeps at a fraction of the cost.
   for (const Keyframe& kf : odometry.keyframes()) {
-    const auto sweep = log.sweep(kf.frame);
+    const auto sweep = sweepOf(kf.frame);
     const Eigen::Isometry3f T = trajectory.poses()[kf.frame].cast<float>();
     const std::vector<Eigen::Vector3f> points = odometry.deskewed(*sweep, kf.frame);
     for (size_t j = 0; j < points.size(); ++j) {

@@ -18,7 +18,7 @@ enum class SubmapLabel : uint8_t { Other = 0, Ground = 1, Road = 2, Curb = 3 };
 // keyframe's level frame (x forward, y left, z up from the ego origin, roll and pitch removed), the
 // road points the matcher saw, and the match from `start` with every iterate.
 struct KeyframeInspection {
-  size_t keyframe = 0, frame = 0;
+  size_t keyframe = 0, frame = 0;  // frame: the log's sweep index of the keyframe
   int64_t timestampNs = 0;
   SE3 keyframePose = SE3::Identity();  // city_T_ego the run has for it (optimised when a graph exists)
   std::optional<Eigen::Vector3d> truth;  // ground-truth (x, y, yaw), when the log's poses cover it

@@ -17,6 +17,7 @@ LogEvaluation logEvaluation(const ArgoverseLog& log, const EvaluatedRun& r) {
   e.id = log.id();
   e.path = log.dir();
   e.sweeps = r.run.estimate.size();
+  for (const SkippedSweep& s : r.run.skippedSweeps) e.skippedSweeps.push_back(s.file.string() + ": " + s.problem);
   e.odometry = r.metrics.odometry;
   e.optimized = r.metrics.optimized;
   e.matchesAccepted = r.metrics.matches.accepted;

@@ -1,7 +1,9 @@
 #pragma once
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,6 +28,14 @@ struct PipelineOptions {
   // The odometry's poses from another system's trajectory instead of the lidar odometry's
   // registration (hdprior run --odometry FILE); the rest of the pipeline is the same.
   std::optional<GivenOdometry> givenOdometry = std::nullopt;
+};
+
+// A sweep the run left out because it could not be read (a truncated or corrupt file, no points);
+// the odometry bridged the gap (the next sweep's motion prediction spans it).
+struct SkippedSweep {
+  size_t index = 0;  // in the log
+  std::filesystem::path file;
+  std::string problem;
 };
 
 struct StageTimes {
@@ -53,19 +63,23 @@ struct PipelineRun {
   OdometryDrift odometryDrift;   // injected into the odometry's reported poses (config odometry.drift)
   std::optional<GivenOdometry> givenOdometry;  // where the odometry's poses came from, when from a file
   PoseGraphOptions graphOptions;  // with priors: the graph's options in use (drift model covering odometryDrift)
+  std::vector<SkippedSweep> skippedSweeps;
+  std::vector<size_t> frameSweeps;  // the log's sweep index of each odometry frame (they differ after a skip)
 
   bool hasPriors() const { return !optimized.empty(); }
   const PoseTrajectory& final() const { return hasPriors() ? optimized : estimate; }
+  size_t sweepOfFrame(size_t frame) const { return frame < frameSweeps.size() ? frameSweeps[frame] : frame; }
 };
 
 // The log's HD map with the NDT grids config.match names; throws Error naming the file that is
 // wrong, or the log when the map has no ground-height raster (the altitude prior needs it).
 std::unique_ptr<HdMap> loadPriorMap(const ArgoverseLog& log, const Config& config);
 
-// A Session run to the end and finished. progress(done, total) is called after each sweep. Throws Error naming the sweep file for a bad or
-// empty sweep, or the log when it has no sweeps, its poses do not cover the first sweep, or (with
-// priors) its map lacks what the priors need, or the given odometry's file when it does not cover
-// the sweeps.
+// A Session run to the end and finished. progress(done, total) is called after each sweep. An
+// unreadable or empty sweep is skipped (PipelineRun::skippedSweeps); throws Error naming the sweep
+// file and the share when more than config.maxUnreadableSweepShare of them are, or naming the log
+// when it has no sweeps, its poses do not cover the first sweep, or (with priors) its map lacks
+// what the priors need, or the given odometry's file when it does not cover the sweeps.
 PipelineRun runPipeline(const ArgoverseLog& log, const Config& config, const PipelineOptions& options = {},
                         const std::function<void(size_t, size_t)>& progress = {});
 

@@ -23,7 +23,7 @@ struct Keyframe;
 
 // What the prior stage did with one keyframe.
 struct KeyframeMatch {
-  size_t keyframe = 0, frame = 0;
+  size_t keyframe = 0, frame = 0;  // frame: the odometry frame (Session::sweepOfFrame gives the log's sweep)
   int64_t timestampNs = 0;
   SE3 predicted = SE3::Identity();  // the odometry pose corrected by the graph so far: the match's start
   MatchResult match;

@@ -84,9 +84,12 @@ json keyframesJson(const PipelineRun& run) {
   for (size_t k = 0; k < run.odometry->keyframes().size(); ++k) {
     const Keyframe& kf = run.odometry->keyframes()[k];
     std::vector<double> cov(kf.relativeCovariance.data(), kf.relativeCovariance.data() + 36);
-    json j = {{"index", k}, {"frame", kf.frame}, {"timestamp_ns", kf.timestampNs},
+    // Frames as the log numbers its sweeps (after a skipped sweep, not the odometry's frame count).
+    std::vector<size_t> submapSweeps;
+    for (size_t f : kf.submapFrames) submapSweeps.push_back(run.sweepOfFrame(f));
+    json j = {{"index", k}, {"frame", run.sweepOfFrame(kf.frame)}, {"timestamp_ns", kf.timestampNs},
               {"city_T_ego", poseJson(run.cityTOdom * kf.odomTEgo)}, {"previous_T_this", poseJson(kf.previousTThis)},
-              {"relative_covariance_v_w", cov}, {"submap_frames", kf.submapFrames}};
+              {"relative_covariance_v_w", cov}, {"submap_frames", submapSweeps}};
     if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
     if (k < run.odometryScales.size()) j["odometry_scale_error"] = run.odometryScales[k];
     if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
@@ -131,12 +134,20 @@ json odometrySourceJson(const PipelineRun& run) {
           {"poses", g.trajectory.size()}};
 }
 
+// The sweeps the run could not read and left out.
+json skippedJson(const std::vector<SkippedSweep>& skipped) {
+  json files = json::array();
+  for (const SkippedSweep& s : skipped) files.push_back(s.file.filename().string());
+  return {{"count", skipped.size()}, {"files", files}};
+}
+
 json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetrics& metrics) {
   json aligned = json::array();
   for (const auto& e : metrics.odometryAligned) aligned.push_back(evaluationJson(e));
   json m = {{"log", log.id()},
             {"priors", run.hasPriors()},
             {"sweeps", run.estimate.size()},
+            {"skipped_sweeps", skippedJson(run.skippedSweeps)},
             {"keyframes", run.odometry->keyframes().size()},
             {"timing", timingJson(run.times, run.estimate.size())},
             {"max_local_map_points", run.maxLocalMapPoints},

@@ -1,6 +1,7 @@
 #include "engine/pipeline/session.h"
 
 #include <chrono>
+#include <cstdio>
 
 #include "engine/error.h"
 #include "engine/geom/se2.h"
@@ -60,18 +61,60 @@ Session::~Session() = default;
 
 size_t Session::sweepCount() const { return log_.sweepCount(); }
 
+std::shared_ptr<const LidarSweep> Session::frameSweep(size_t frame) const { return log_.sweep(frameSweeps_.at(frame)); }
+
+// The sweep, or nullptr when it is skipped.
+std::shared_ptr<const LidarSweep> Session::readableSweep(size_t index) {
+  const std::filesystem::path file = log_.sweepPath(index);
+  std::string problem;
+  try {
+    std::shared_ptr<const LidarSweep> sweep = log_.sweep(index);
+    if (!sweep->points.empty()) return sweep;
+    problem = "the sweep has zero points";
+  } catch (const Error& e) {
+    problem = e.file() == file.string() ? e.reason() : e.what();
+  }
+  skipped_.push_back({index, file, problem});
+  const double share = double(skipped_.size()) / double(sweepCount());
+  if (share > config_.maxUnreadableSweepShare) {
+    char text[160];
+    std::snprintf(text, sizeof text, "; %zu of the log's %zu sweeps (%.1f %%) are unreadable, more than %g %% "
+                  "(config sweeps.max_unreadable_share)", skipped_.size(), sweepCount(), 100.0 * share,
+                  100.0 * config_.maxUnreadableSweepShare);
+    throw Error(file.string(), problem + text);
+  }
+  return nullptr;
+}
+
+// The built-in odometry starts at the first sweep it can read: its frame and the graph are anchored
+// at that sweep's ground-truth pose. (Given poses keep the first sweep's frame: the file covers it.)
+void Session::anchorAt(size_t index) {
+  const int64_t t = log_.sweepTimestamps()[index];
+  if (!log_.cityTEgo().covers(t)) {
+    throw Error(log_.dir().string(), "the ground-truth poses do not cover the first readable sweep (needed to anchor the start)");
+  }
+  cityTOdom_ = log_.cityTEgo().at(t);
+  if (map_) priors_ = std::make_unique<PriorStage>(*map_, config_, cityTOdom_, givenOdometry_.has_value());
+}
+
 void Session::step() {
   if (done()) return;
-  const size_t i = sweepsDone();
+  const size_t i = nextSweep_++;
   const auto start = Clock::now();
-  const auto sweep = log_.sweep(i);
-  if (sweep->points.empty()) throw Error(log_.sweepPath(i).string(), "the sweep has zero points");
+  const std::shared_ptr<const LidarSweep> sweep = readableSweep(i);
+  if (!sweep) {
+    if (done() && frameSweeps_.empty()) throw Error((log_.dir() / "sensors" / "lidar").string(), "no sweep of the log can be read");
+    times_.pipelineS += secondsSince(start);
+    return;
+  }
+  if (frameSweeps_.empty() && i > 0 && !odometry_->givenPoses()) anchorAt(i);
   const auto odometryStart = Clock::now();
   const OdometryFrame& frame = odometry_->registerSweep(*sweep);
   times_.odometryS += secondsSince(odometryStart);
+  frameSweeps_.push_back(i);
   estimate_.push_back(cityTOdom_ * frame.odomTEgo);
-  if (priors_ && odometry_->keyframes().back().frame == i) {
-    priors_->addKeyframe(*odometry_, [this](size_t f) { return log_.sweep(f); });
+  if (priors_ && odometry_->keyframes().back().frame + 1 == odometry_->frames().size()) {
+    priors_->addKeyframe(*odometry_, [this](size_t f) { return frameSweep(f); });
     times_.roadPointsS = priors_->times().roadPointsS;
     times_.matchS = priors_->times().matchS;
     times_.graphS = priors_->times().graphS;
@@ -121,7 +164,7 @@ KeyframeInspection Session::inspectKeyframe(size_t k, const SweepRoadPointOption
   const Keyframe& kf = odometry_->keyframes()[k];
   KeyframeInspection out;
   out.keyframe = k;
-  out.frame = kf.frame;
+  out.frame = sweepOfFrame(kf.frame);
   out.timestampNs = kf.timestampNs;
   out.keyframePose = keyframePoses()[k];
   if (log_.cityTEgo().covers(kf.timestampNs)) out.truth = planarPose(log_.cityTEgo().at(kf.timestampNs));
@@ -129,7 +172,7 @@ KeyframeInspection Session::inspectKeyframe(size_t k, const SweepRoadPointOption
   out.start = start ? *start : matched ? planarPose(priors_->matches()[k].predicted) : planarPose(cityTOdom_ * kf.odomTEgo);
 
   const KeyframeSweeps sweeps =
-      keyframeSweeps(*odometry_, k, cityTOdom_, config_.submapRoadPoints, [this](size_t f) { return log_.sweep(f); });
+      keyframeSweeps(*odometry_, k, cityTOdom_, config_.submapRoadPoints, [this](size_t f) { return frameSweep(f); });
   const LabelledSubmap submap = labelSubmap(sweeps.placed, roadPoints);
   const PlanarRoadPoints planar = planarRoadPoints(submap, roadPoints.thinCell);
   out.points.reserve(submap.points.size());
@@ -143,8 +186,9 @@ KeyframeInspection Session::inspectKeyframe(size_t k, const SweepRoadPointOption
 }
 
 PoseTrajectory Session::odometryTrajectory() const {
-  const auto& stamps = log_.sweepTimestamps();
-  return PoseTrajectory(std::vector<int64_t>(stamps.begin(), stamps.begin() + long(estimate_.size())), estimate_, "odometry");
+  std::vector<int64_t> stamps;
+  for (size_t s : frameSweeps_) stamps.push_back(log_.sweepTimestamps()[s]);
+  return PoseTrajectory(stamps, estimate_, "odometry");
 }
 
 PoseTrajectory Session::optimizedTrajectory() const {
@@ -183,8 +227,10 @@ PipelineRun Session::finish(double mapVoxel) {
   }
   run.times = times_;
   run.maxLocalMapPoints = maxLocalMapPoints_;
+  run.skippedSweeps = skipped_;
+  run.frameSweeps = frameSweeps_;
   const auto mapStart = Clock::now();
-  GlobalMap global = buildGlobalMap(log_, *odometry_, run.final(), mapVoxel);
+  GlobalMap global = buildGlobalMap([this](size_t f) { return frameSweep(f); }, *odometry_, run.final(), mapVoxel);
   run.mapPoints = std::move(global.points);
   run.mapIntensity = std::move(global.intensity);
   run.times.mapS = secondsSince(mapStart);

@@ -36,10 +36,12 @@ class Session {
   const Config& config() const { return config_; }
   bool hasPriors() const { return priors_ != nullptr; }
   size_t sweepCount() const;
-  size_t sweepsDone() const { return estimate_.size(); }
+  size_t sweepsDone() const { return nextSweep_; }  // skipped ones included
   bool done() const { return sweepsDone() == sweepCount(); }
 
-  // One sweep. Throws Error naming the sweep file for a bad or empty sweep.
+  // One sweep. One that cannot be read (or has no points) is skipped and noted in skippedSweeps();
+  // the odometry's next prediction spans the gap. Throws Error naming the sweep file and the share
+  // when more than config.maxUnreadableSweepShare of the log's sweeps are unreadable.
   void step();
   // Sweeps until the odometry makes a keyframe, or the end.
   void stepKeyframe();
@@ -67,12 +69,20 @@ class Session {
   std::vector<SE3> keyframePoses() const;              // the graph's (or the odometry's) keyframe poses
   const PoseGraph* graph() const;
   const StageTimes& times() const { return times_; }
+  const std::vector<SkippedSweep>& skippedSweeps() const { return skipped_; }
+  // Odometry frames (Keyframe::frame, KeyframeMatch::frame) are the sweeps read: the log's sweep
+  // index of a frame, and its sweep.
+  size_t sweepOfFrame(size_t frame) const { return frameSweeps_.at(frame); }
+  std::shared_ptr<const LidarSweep> frameSweep(size_t frame) const;
 
   // The final batch solve, the corrected trajectory and the global map: the run as `hdprior run`
   // writes it. The session is spent afterwards.
   PipelineRun finish(double mapVoxel);
 
  private:
+  std::shared_ptr<const LidarSweep> readableSweep(size_t index);
+  void anchorAt(size_t index);
+
   const ArgoverseLog& log_;
   const HdMap* map_;
   Config config_;
@@ -84,6 +94,9 @@ class Session {
   PoseTrajectory groundTruth_;
   StageTimes times_;
   size_t maxLocalMapPoints_ = 0;
+  size_t nextSweep_ = 0;
+  std::vector<size_t> frameSweeps_;  // the log's sweep index of each odometry frame
+  std::vector<SkippedSweep> skipped_;
 };
 
 }  // namespace hdprior

@@ -11,11 +11,12 @@
 #include <thread>
 
 #include "engine/error.h"
-#include "engine/io/argoverse_log.h"
 #include "engine/io/arrow_table.h"
 #include "engine/io/ego_poses.h"
 #include "engine/io/feather.h"
 #include "engine/io/file_bytes.h"
+#include "engine/io/lidar_sweep.h"
+#include "engine/io/map_folder.h"
 #include "engine/io/vector_map.h"
 #include "engine/map/lane_graph.h"
 #include "engine/sim/lidar_model.h"
@@ -81,7 +82,8 @@ struct World {
   GroundHeight ground;
   std::string source, city;
   std::optional<TownMap> town;
-  std::unique_ptr<ArgoverseLog> log;
+  std::optional<MapFolder> folder;  // a real log's map
+  PoseTrajectory logPoses;          // its poses, for SimTrajectory::Real
 };
 
 World loadWorld(const SimulationOptions& o, const TownOptions& town) {
@@ -93,12 +95,19 @@ World loadWorld(const SimulationOptions& o, const TownOptions& town) {
     w.source = "town " + std::to_string(*o.townSeed);
     w.city = "SIM";
   } else {
-    w.log = std::make_unique<ArgoverseLog>(o.mapLog);
-    w.map = readVectorMap(w.log->mapFiles().vectorMap);
-    w.source = w.log->mapFiles().vectorMap.string();
+    w.folder = openMapFolder(o.mapLog);
+    w.map = readVectorMap(w.folder->files.vectorMap);
+    w.source = w.folder->files.vectorMap.string();
     if (w.map.drivableAreas.empty()) throw Error(w.source, "map has no drivable areas");
-    w.ground = readGroundHeight(w.log->mapFiles().groundHeight, w.log->mapFiles().sim2);
-    w.city = w.log->city();
+    w.ground = readGroundHeight(w.folder->files.groundHeight, w.folder->files.sim2);
+    w.city = w.folder->city;
+    if (o.trajectory == SimTrajectory::Real) {
+      if (!w.folder->poses) {
+        throw Error((o.mapLog / "city_SE3_egovehicle.feather").string(),
+                    "not found: --trajectory real follows the log's poses (--trajectory route drives the map alone)");
+      }
+      w.logPoses = readEgoPoses(*w.folder->poses);
+    }
   }
   return w;
 }
@@ -110,7 +119,7 @@ void writeMap(const World& w, const VectorMap& written, bool changed, const fs::
     writeTownMap(dir, logId, w.city, copy);
     return;
   }
-  const LogMapFiles& files = w.log->mapFiles();
+  const LogMapFiles& files = w.folder->files;
   const std::string name = files.vectorMap.filename().string();
   const size_t cityAt = name.find("_city_");
   const std::string suffix = cityAt == std::string::npos ? "_city_0.json" : name.substr(cityAt);
@@ -151,7 +160,7 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   variation.applyTo(sceneOptions);
   const World world = loadWorld(o, townOptions);
   // Output folder first (fails fast when it cannot be written), under a temporary name.
-  const std::string source = o.townSeed ? world.source : world.log->id();
+  const std::string source = o.townSeed ? world.source : world.folder->id;
   const std::string logId = logIdFor(o, source);
   makeDirs(o.outDir);
   TempDir temp{o.outDir / ("." + logId + ".partial")};
@@ -174,7 +183,7 @@ SimulationResult simulateLog(const SimulationOptions& o) {
     ro.seconds = o.seconds > 0.0 ? o.seconds : 20.0;
     cityTEgo = routeTrajectory(lanes, world.ground, ro, o.seed);
   } else {
-    cityTEgo = cropTrajectory(world.log->cityTEgo(), o.seconds);
+    cityTEgo = cropTrajectory(world.logPoses, o.seconds);
   }
   const int64_t period = lidar.periodNs;
   const size_t sweeps = o.seconds > 0.0 ? size_t(std::llround(o.seconds * 1e9 / double(period)))

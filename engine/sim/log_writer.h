@@ -18,7 +18,8 @@ enum class SimTrajectory { Real, Route };
 // What `hdprior sim` does, as one value.
 struct SimulationOptions {
   std::optional<uint64_t> townSeed;     // a procedural town, or
-  std::filesystem::path mapLog;         // the map (and, for Real, the poses) of a real log
+  std::filesystem::path mapLog;         // a real log's folder (openMapFolder): its map, and for Real its
+                                        // poses; sweeps and calibration are not needed
   std::filesystem::path outDir;
   double seconds = 0.0;                 // <= 0: 20 s for a route, the whole log for Real
   uint64_t seed = 0;                    // scene, route, noise

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
 #include "engine/io/argoverse_log.h"
 #include "engine/odom/odometry.h"
 #include "test_data.h"
@@ -7,6 +11,7 @@
 
 namespace hdprior::test {
 namespace {
+namespace fs = std::filesystem;
 
 // The app's worker: a job runs off the UI thread, can be cancelled between sweeps and resumed, and the
 // session is readable only while no job runs.
@@ -55,6 +60,39 @@ TEST(SessionRunner, AJobThatFailsLeavesItsMessage) {
   EXPECT_NE(runner.error().find("0.05"), std::string::npos) << runner.error();
   EXPECT_NE(runner.lastJob().find("failed"), std::string::npos);
   EXPECT_EQ(runner.session(), nullptr);
+}
+
+// The shared log with its second sweep corrupt: the app's run steps over it when the share allows
+// (1 of 2 here), else the job fails with the one-line error naming the share; nothing crashes.
+TEST(SessionRunner, AnUnreadableSweepIsSkippedOrFailsTheJob) {
+  const fs::path dir = freshOutputDir("runner_bad_sweep") / "log";
+  fs::create_directories(dir / "sensors" / "lidar");
+  for (const char* entry : {"map", "calibration", "city_SE3_egovehicle.feather"})
+    fs::create_symlink(fs::absolute(sharedLog() / entry), dir / entry);
+  std::vector<fs::path> sweeps;
+  for (const auto& e : fs::directory_iterator(sharedLog() / "sensors" / "lidar")) sweeps.push_back(e.path());
+  std::sort(sweeps.begin(), sweeps.end());
+  fs::copy_file(sweeps[0], dir / "sensors" / "lidar" / sweeps[0].filename());
+  std::ofstream(dir / "sensors" / "lidar" / sweeps[1].filename()) << "not a feather file";
+  const ArgoverseLog log(dir);
+
+  Config lenient;
+  lenient.maxUnreadableSweepShare = 0.5;
+  ui::SessionRunner runner(log, lenient);
+  runner.run();
+  runner.wait();
+  ASSERT_TRUE(runner.poll());
+  EXPECT_TRUE(runner.error().empty()) << runner.error();
+  EXPECT_EQ(runner.lastJob(), "ran 2 sweeps, 1 keyframes, 1 unreadable sweeps skipped");
+  ASSERT_EQ(runner.session()->skippedSweeps().size(), 1u);
+  EXPECT_EQ(runner.session()->odometryTrajectory().size(), 1u);
+
+  ui::SessionRunner strict(log, Config{});
+  strict.run();
+  strict.wait();
+  ASSERT_TRUE(strict.poll());
+  EXPECT_NE(strict.error().find(sweeps[1].filename().string()), std::string::npos) << strict.error();
+  EXPECT_NE(strict.error().find("1 of the log's 2 sweeps (50.0 %) are unreadable"), std::string::npos) << strict.error();
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void drawKeyframeList(AppState& state, const Session& session) {
   for (size_t k = 0; k < keyframes.size(); ++k) {
     char label[96];
     const char* status = k < matches.size() ? toString(matches[k].match.status) : "no match";
-    std::snprintf(label, sizeof label, "%3zu  frame %4zu  %s", k, keyframes[k].frame, status);
+    std::snprintf(label, sizeof label, "%3zu  frame %4zu  %s", k, session.sweepOfFrame(keyframes[k].frame), status);
     if (k < matches.size()) ImGui::PushStyleColor(ImGuiCol_Text, statusColor(matches[k].match.status));
     if (ImGui::Selectable(label, state.bench().selected() == k)) state.inspectKeyframe(k);
     if (k < matches.size()) ImGui::PopStyleColor();

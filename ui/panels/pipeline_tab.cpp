@@ -38,6 +38,9 @@ void drawSessionSummary(AppState& state) {
   }
   ImGui::Text("sweeps %zu / %zu   keyframes %zu", session->sweepsDone(), session->sweepCount(),
               session->odometry().keyframes().size());
+  for (const SkippedSweep& s : session->skippedSweeps()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.2f, 1.0f), "skipped sweep %zu (unreadable): %s", s.index, s.problem.c_str());
+  }
   size_t counts[3] = {0, 0, 0};
   for (const KeyframeMatch& m : session->matches()) ++counts[int(m.match.status)];
   ImGui::Text("matches: %zu accepted, %zu degenerate, %zu rejected", counts[0], counts[1], counts[2]);

@@ -181,6 +181,25 @@ TEST_F(EvalCommand, OdometryDirGivesEachLogItsTrajectoryAndReportsALogWithout) {
   EXPECT_FALSE(fs::exists(out.string() + "_x"));
 }
 
+// Only broken logs: every table is written, with no average in it, and the status is 2.
+TEST(EvalCommandAllFailed, TablesSayNoLogWentThrough) {
+  const fs::path dir = test::freshOutputDir("eval_all_failed");
+  for (const char* name : {"broken1", "broken2"}) {
+    fs::create_directories(dir / "logs" / name / "sensors" / "lidar");
+    std::ofstream(dir / "logs" / name / "city_SE3_egovehicle.feather", std::ios::binary) << "ARROW1";
+  }
+  const auto r = test::runHdprior("eval " + (dir / "logs").string() + " --out " + (dir / "out").string() + " -j 1");
+  EXPECT_EQ(r.status, 2) << r.err;
+  const std::string md = test::readFileText(dir / "out" / "table.md");
+  EXPECT_NE(md.find("No log went through (2 of 2 failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("| odometry | 0 | n/a | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
+  EXPECT_NE(r.out.find("n/a"), std::string::npos) << r.out;
+  const auto table = split(test::readFileText(dir / "out" / "table.csv"), '\n');
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_EQ(table[1], "odometry,0,2,,,,,,no log went through");
+  EXPECT_TRUE(fs::exists(dir / "out" / "rmse_boxplot.png"));
+}
+
 TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
   const fs::path dir = test::freshOutputDir("eval_options");
   const fs::path empty = dir / "empty", out = dir / "out";

@@ -75,16 +75,18 @@ TEST(EvalSummary, WithoutPriorsOnlyTheOdometryAndAllFailedGivesNothing) {
 }
 
 TEST(EvalReport, PerLogCsvHasARowPerLogAndQuotesTheError) {
-  const std::string csv = perLogCsv({okLog("a", 1, true), failedLog("b", "b/city_SE3_egovehicle.feather: file too short, \"12\" bytes"),
+  LogEvaluation a = okLog("a", 1, true);
+  a.skippedSweeps = {"/logs/a/sensors/lidar/5.feather: file too short"};
+  const std::string csv = perLogCsv({a, failedLog("b", "b/city_SE3_egovehicle.feather: file too short, \"12\" bytes"),
                                      okLog("c", 2, false)});
   const auto rows = lines(csv);
   ASSERT_EQ(rows.size(), 4u);
-  EXPECT_EQ(rows[0].rfind("log_id,path,sweeps,path_length_m,odometry_ate_mean_m,", 0), 0u);
+  EXPECT_EQ(rows[0].rfind("log_id,path,sweeps,skipped_sweeps,path_length_m,odometry_ate_mean_m,", 0), 0u);
   EXPECT_NE(rows[0].find(",optimized_ate_rmse_m,"), std::string::npos);
-  EXPECT_EQ(rows[1].rfind("a,/logs/a,100,80.000,1.000000,2.000000,3.000000,4.000000,5.000000,1.500000,0.500000,,"
+  EXPECT_EQ(rows[1].rfind("a,/logs/a,100,1,80.000,1.000000,2.000000,3.000000,4.000000,5.000000,1.500000,0.500000,,"
                           "0.100000,0.200000,0.300000,0.400000,0.500000,0.150000,0.500000,,3,0,0,,,,,,,4.50,", 0), 0u)
       << rows[1];
-  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
+  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
   // Without priors the optimised columns, the match counts and the prior calibration are empty.
   EXPECT_NE(rows[3].find(",0.500000,,,,,,,,,,,,,,,,,,,4.50,"), std::string::npos) << rows[3];
   const size_t columns = std::count(rows[0].begin(), rows[0].end(), ',');
@@ -104,6 +106,19 @@ TEST(EvalReport, TablesStateTheAveraging) {
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0], "trajectory,logs,failed_logs,mean_m,median_m,rmse_m,std_m,max_m,averaging");
   EXPECT_EQ(rows[1].rfind("odometry,2,1,1.500000,3.000000,4.500000,6.000000,7.500000,", 0), 0u) << rows[1];
+}
+
+// Every log failed: no average is 0.000; table.md says no log went through and shows n/a,
+// table.csv leaves the statistics empty (missing values to a CSV reader).
+TEST(EvalReport, WhenNoLogWentThroughTheTablesShowNoAverage) {
+  const EvalSummary s = summarizeLogs({failedLog("a", "x: broken"), failedLog("b", "y: broken")});
+  const std::string md = summaryMarkdown(s);
+  EXPECT_NE(md.find("No log went through (2 of 2 failed; per_log.csv has each one's error)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| odometry | 0 | n/a | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("0.000"), std::string::npos) << md;
+  const auto rows = lines(summaryCsv(s));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1], "odometry,0,2,,,,,,no log went through");
 }
 
 TEST(EvalReport, BoxPlotOfTheSuccessfulLogs) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -267,6 +268,82 @@ TEST(SimCommand, UnwritableOutputFolderFailsCleanly) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("file/sub"), std::string::npos) << r.err;
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// A folder holding only part of a log: the shared log's map files (in map/, or on their own as
+// "Trust, but Verify" ships them), with or without its poses; never sweeps nor calibration.
+fs::path partOfTheSharedLog(const std::string& name, bool mapSubfolder, bool poses) {
+  const fs::path src = test::sharedLog();
+  const fs::path dir = test::freshOutputDir(name) / "in";
+  fs::create_directories(dir);
+  if (mapSubfolder) {
+    fs::create_directory_symlink(src / "map", dir / "map");
+  } else {
+    for (const auto& e : fs::directory_iterator(src / "map")) fs::create_symlink(e.path(), dir / e.path().filename());
+  }
+  if (poses) fs::create_symlink(src / "city_SE3_egovehicle.feather", dir / "city_SE3_egovehicle.feather");
+  return dir;
+}
+
+struct SimRun {
+  test::CommandResult result;
+  fs::path log;  // the folder written
+};
+
+SimRun simulate(const fs::path& in, const std::string& extra = "") {
+  const fs::path out = in.parent_path() / "out";
+  SimRun r{test::runHdprior("sim --map '" + in.string() + "' --seconds 2 --quiet --out '" + out.string() + "'" + extra), {}};
+  std::string id = r.result.out;
+  while (!id.empty() && std::isspace((unsigned char)id.back())) id.pop_back();
+  r.log = out / id;
+  return r;
+}
+
+void expectTheDefaultCalibrationNotice(const std::string& err, const fs::path& in) {
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find(in.string() + " has no calibration/egovehicle_SE3_sensor.feather: the simulated lidars have the "
+                                   "default Argoverse 2 calibration"), std::string::npos) << err;
+}
+
+TEST(SimCommand, MapFilesAloneDriveARouteWithTheDefaultCalibration) {
+  for (bool subfolder : {false, true}) {
+    const fs::path in = partOfTheSharedLog(subfolder ? "sim_maponly_sub" : "sim_maponly_flat", subfolder, false);
+    const SimRun r = simulate(in);
+    ASSERT_EQ(r.result.status, 0) << r.result.err;
+    expectTheDefaultCalibrationNotice(r.result.err, in);
+    const auto info = test::runHdprior("info '" + r.log.string() + "'");
+    ASSERT_EQ(info.status, 0) << info.err;
+    EXPECT_NE(info.out.find("sweeps:            20"), std::string::npos) << info.out;
+    const ArgoverseLog log(r.log);
+    EXPECT_EQ(log.city(), "PIT");
+    EXPECT_EQ(log.calibration().count("up_lidar"), 1u);
+    // A route on the map, not the log's own drive (which it does not have).
+    const ArgoverseLog shared(test::sharedLog());
+    EXPECT_GT((log.cityTEgo().poses().front().translation() - shared.cityTEgo().poses().front().translation()).norm(), 1.0);
+  }
+}
+
+TEST(SimCommand, MapAndPosesDriveTheLogsOwnTrajectory) {
+  const fs::path in = partOfTheSharedLog("sim_mapposes", true, true);
+  const SimRun r = simulate(in);
+  ASSERT_EQ(r.result.status, 0) << r.result.err;
+  expectTheDefaultCalibrationNotice(r.result.err, in);
+  ASSERT_EQ(test::runHdprior("info '" + r.log.string() + "'").status, 0);
+  const ArgoverseLog log(r.log), shared(test::sharedLog());
+  EXPECT_EQ(log.sweepCount(), 20u);
+  const int64_t t = log.sweepTimestamps()[10];
+  EXPECT_LT((log.cityTEgo().at(t).translation() - shared.cityTEgo().at(t).translation()).norm(), 1e-6);
+}
+
+TEST(SimCommand, AWholeLogNeedsNoNoticeAndAMapAloneHasNoRealTrajectory) {
+  const fs::path out = test::freshOutputDir("sim_whole_log");
+  const auto whole = test::runHdprior("sim --map '" + test::sharedLog().string() + "' --seconds 0.2 --quiet --out '" +
+                                      out.string() + "'");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  EXPECT_TRUE(whole.err.empty()) << whole.err;
+  const fs::path in = partOfTheSharedLog("sim_maponly_real", true, false);
+  expectCleanFailure("sim --map '" + in.string() + "' --trajectory real --quiet --out '" + (in.parent_path() / "out").string() + "'",
+                     in.parent_path() / "out", in.string() + "/city_SE3_egovehicle.feather: not found");
 }
 
 TEST(SimCommand, MapWithoutDrivableAreasFailsCleanly) {
