@@ -92,8 +92,10 @@ TEST(CostLandscapeSim, IsARidgeAlongAStraightStreet) {
   const double straight = ratio(*corridor), crossing = ratio(*junction);
   std::printf("along / across variation: %.3f on the straight street (keyframe %zu), %.3f at keyframe %zu\n", straight,
               corridor->keyframe, crossing, junction->keyframe);
-  EXPECT_LT(straight, 0.1);
-  EXPECT_GT(crossing, 0.1);  // the measure tells them apart
+  // 0.114 since the road points follow the camber out to the kerbs (a ridge all the same: the score
+  // varies nine times less along the street than across it).
+  EXPECT_LT(straight, 0.15);
+  EXPECT_GT(crossing, 0.3);  // the measure tells them apart
 }
 
 }  // namespace
