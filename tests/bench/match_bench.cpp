@@ -1,5 +1,5 @@
 // Scan-to-map matching speed and accuracy on the real shared log: the 2-D NDT and PCL's
-// NDT on the same road points from the same starts (the truth moved by a lateral offset in
+// NDT on the same road points and curbs (as the pipeline matches them) from the same starts (the truth moved by a lateral offset in
 // {-1.5, 0, +1.5} m and a yaw offset in {-3, 0, +3} degrees, for both sweeps), and the
 // road-point extraction that feeds them. Counters: mean absolute lateral / along / yaw
 // error and the share of starts within 0.25 m lateral and 0.5 degrees.
@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Case {
-  std::vector<Eigen::Vector2d> points;
+  std::vector<Eigen::Vector2d> points, curbs;
   Eigen::Vector3d truth, start;
 };
 
@@ -45,9 +45,13 @@ const Fixture& fixture() {
     for (size_t s = 0; s < f.log->sweepCount(); ++s) {
       const SE3 truth3 = f.log->cityTEgo().at(f.log->sweepTimestamps()[s]);
       const Eigen::Vector3d truth = planarPose(truth3);
-      const std::vector<Eigen::Vector2d> points = sweepRoadPoints(*f.log->sweep(s), levelRotation(truth3));
+      const auto sweep = f.log->sweep(s);
+      const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
+      const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
       for (double lateral : {-1.5, 0.0, 1.5}) {
-        for (double yawDeg : {-3.0, 0.0, 3.0}) f.cases.push_back({points, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDeg})});
+        for (double yawDeg : {-3.0, 0.0, 3.0}) {
+          f.cases.push_back({points.road, points.curb, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDeg})});
+        }
       }
     }
     return f;
@@ -67,7 +71,7 @@ void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncert
   double lateral = 0, along = 0, yaw = 0;
   for (auto _ : state) {
     const Case& c = f.cases[i++ % f.cases.size()];
-    const MatchResult r = matcher.match(c.points, c.start);
+    const MatchResult r = matcher.match(c.points, c.start, c.curbs);
     const Eigen::Vector3d e = planarError(c.truth, r.estimate);
     ++n;
     along += std::abs(e.x());
