@@ -31,6 +31,7 @@ void AppState::open(LoadedLog loaded) {
   renderer_ = std::make_unique<render::Renderer>();
   for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));
   renderer_->setScene(scene_);
+  layerVisibility_.reset(renderer_->layers());
   groundColorRange_.reset();
   if (loaded_.map->hasGroundHeight()) groundColorRange_ = render::groundHeightColorRange(loaded_.map->groundHeight());
   playback = Playback{};
@@ -68,6 +69,7 @@ void AppState::goToFrame(long long index) {
 void AppState::pollBench() {
   if (!bench_ || !bench_->poll()) return;
   renderer_->setAnalysis(bench_->analysis());
+  layerVisibility_.analysisArrived(renderer_->layers(), bench_->analysis());
   if (const auto frame = std::exchange(bench_->frameToShow, std::nullopt)) goToFrame((long long)*frame);
 }
 

@@ -10,6 +10,7 @@
 #include "render/layers/ground_height_layer.h"
 #include "render/renderer.h"
 #include "render/scene.h"
+#include "ui/layer_visibility.h"
 #include "ui/playback.h"
 #include "ui/tuning_bench.h"
 #include "ui/view_camera.h"
@@ -36,7 +37,7 @@ struct GroundCursor {
   double groundHeight = 0.0;
 };
 
-// What the panels share: the open log, the renderer with every layer, the current frame,
+// What the panels share: the open log, the renderer with every layer (the default set shown), the current frame,
 // playback and camera. Renderer calls need the window's context current.
 class AppState {
  public:
@@ -59,6 +60,8 @@ class AppState {
   render::Renderer& renderer() { return *renderer_; }
   // The layer named so, or nullptr.
   render::Layer* layer(const std::string& name);
+  // The user showing or hiding a layer (the panel's checkbox, a script's `layer` command).
+  void setLayerVisible(render::Layer& layer, bool visible) { layerVisibility_.setByUser(layer, visible); }
   const std::optional<render::HeightRange>& groundColorRange() const { return groundColorRange_; }
 
   // The tuning bench of the open log (its pipeline session, tuned config, selected keyframe).
@@ -86,6 +89,7 @@ class AppState {
   render::Scene scene_;
   std::unique_ptr<render::Renderer> renderer_;
   std::optional<render::HeightRange> groundColorRange_;
+  LayerVisibility layerVisibility_;
   std::unique_ptr<TuningBench> bench_;
 };
 

@@ -113,7 +113,7 @@ void Viewer::runScript() {
     else if (c.verb == "view") state_->camera.topDown = a[0] == "top";
     else if (c.verb == "layer") {
       render::Layer& layer = *state_->layer(a[0]);
-      layer.visible = a[1] == "toggle" ? !layer.visible : a[1] == "on";
+      state_->setLayerVisible(layer, a[1] == "toggle" ? !layer.visible : a[1] == "on");
     } else if (c.verb == "opacity") state_->layer(a[0])->opacity = std::stof(a[1]);
     else if (runBenchCommand(c)) continue;
     else if (c.verb == "wait") {

@@ -75,6 +75,7 @@ void viewBench(benchmark::State& state, bool topDown, bool cacheView, Motion mot
   if (!viewer) return;
   ui::AppState& app = viewer->state();
   auto* accumulated = dynamic_cast<render::AccumulatedSweepsLayer*>(app.layer("accumulated"));
+  accumulated->visible = true;  // an extra, hidden at start
   accumulated->setWindow(3);
   app.goToFrame(3);
   app.renderer().rebuild(*accumulated);

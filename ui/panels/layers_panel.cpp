@@ -31,7 +31,8 @@ bool drawOption(const render::LayerOption& option) {
 
 void drawLayer(AppState& state, render::Layer& layer) {
   ImGui::PushID(&layer);
-  ImGui::Checkbox("##visible", &layer.visible);
+  bool visible = layer.visible;
+  if (ImGui::Checkbox("##visible", &visible)) state.setLayerVisible(layer, visible);
   ImGui::SameLine();
   if (ImGui::TreeNode(layer.name().c_str())) {
     ImGui::SetNextItemWidth(140);
