@@ -20,15 +20,7 @@ namespace fs = std::filesystem;
 // A log's ground truth at every sweep it covers, or a TUM file's poses.
 PoseTrajectory sourceTrajectory(const fs::path& in) {
   if (!fs::is_directory(in)) return readTum(in);
-  const ArgoverseLog log(in);
-  std::vector<int64_t> stamps;
-  std::vector<SE3> poses;
-  for (int64_t t : log.sweepTimestamps()) {
-    if (!log.cityTEgo().covers(t)) continue;
-    stamps.push_back(t);
-    poses.push_back(log.cityTEgo().at(t));
-  }
-  return PoseTrajectory(std::move(stamps), std::move(poses), in.string());
+  return ArgoverseLog(in).cityTEgoAtSweeps();
 }
 
 }  // namespace

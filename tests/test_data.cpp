@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include "engine/sim/log_writer.h"
 
 namespace hdprior::test {
 namespace fs = std::filesystem;
@@ -55,6 +58,15 @@ CommandResult runHdprior(const std::string& args) {
   fs::remove(out);
   fs::remove(err);
   return r;
+}
+
+SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, double seconds) {
+  SimulationOptions sim;
+  sim.townSeed = uint64_t(town);
+  sim.seed = uint64_t(seed);
+  sim.seconds = seconds;
+  sim.outDir = freshOutputDir(name + "_" + std::to_string(::getpid()));
+  return {sim.outDir, simulateLog(sim).dir};
 }
 
 }  // namespace hdprior::test

@@ -11,6 +11,13 @@ std::filesystem::path sharedDataDir();
 
 // A fresh, empty directory for one test's outputs, under the build tree.
 std::filesystem::path freshOutputDir(const std::string& name);
+// A short simulated town drive (`hdprior sim --town town --seed seed --seconds seconds`) in a fresh
+// folder named after `name` and this process (ctest runs each test in its own process, in
+// parallel); returns the folder it was written to and the log's folder in it.
+struct SimulatedDrive {
+  std::filesystem::path folder, log;
+};
+SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, double seconds);
 // A whole file as bytes in a string (empty if it cannot be read).
 std::string readFileText(const std::filesystem::path& path);
 

@@ -68,4 +68,15 @@ std::shared_ptr<const LidarSweep> ArgoverseLog::sweep(size_t index) const {
   return loaded;
 }
 
+PoseTrajectory ArgoverseLog::cityTEgoAtSweeps() const {
+  std::vector<int64_t> stamps;
+  std::vector<SE3> poses;
+  for (int64_t t : sweepTimestamps_) {
+    if (!cityTEgo_.covers(t)) continue;
+    stamps.push_back(t);
+    poses.push_back(cityTEgo_.at(t));
+  }
+  return PoseTrajectory(std::move(stamps), std::move(poses), (dir_ / "city_SE3_egovehicle.feather").string());
+}
+
 }  // namespace hdprior

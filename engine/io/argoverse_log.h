@@ -34,6 +34,8 @@ class ArgoverseLog {
   std::shared_ptr<const LidarSweep> sweep(size_t index) const;  // throws Error on a bad file
 
   const PoseTrajectory& cityTEgo() const { return cityTEgo_; }
+  // The ground truth at every sweep timestamp the poses cover.
+  PoseTrajectory cityTEgoAtSweeps() const;
   const SensorCalibration& calibration() const { return calibration_; }
 
  private:

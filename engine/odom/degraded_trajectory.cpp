@@ -2,21 +2,21 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "engine/error.h"
+#include "engine/io/text_lines.h"
 
 namespace hdprior {
 namespace {
 
-bool parseValue(const std::string& text, double& out) {
-  try {
-    size_t used = 0;
-    out = std::stod(text, &used);
-    return used == text.size() && std::isfinite(out);
-  } catch (const std::exception&) {
-    return false;
-  }
+// `out` = the whole of `text` as one finite number.
+bool parseFinite(const std::string& text, double& out) {
+  const std::optional<double> v = parseNumber(text);
+  if (!v || !std::isfinite(*v)) return false;
+  out = *v;
+  return true;
 }
 
 // Box-Muller from the engine's raw output: std::normal_distribution's algorithm is the library's
@@ -47,8 +47,8 @@ SE3 randomStep(std::mt19937_64& rng, double length, const RandomWalk& walk) {
 RandomWalk parseRandomWalk(const std::string& text, const std::string& source) {
   const size_t comma = text.find(',');
   RandomWalk walk;
-  if (comma == std::string::npos || !parseValue(text.substr(0, comma), walk.translationSigma) ||
-      !parseValue(text.substr(comma + 1), walk.rotationSigmaDeg)) {
+  if (comma == std::string::npos || !parseFinite(text.substr(0, comma), walk.translationSigma) ||
+      !parseFinite(text.substr(comma + 1), walk.rotationSigmaDeg)) {
     throw Error(source, "'" + text + "' is not SIGMA_M,SIGMA_DEG (per sqrt(metre)), e.g. 0.002,0.002");
   }
   if (walk.translationSigma < 0 || walk.translationSigma > 1 || walk.rotationSigmaDeg < 0 || walk.rotationSigmaDeg > 1) {

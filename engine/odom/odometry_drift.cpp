@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "engine/error.h"
+#include "engine/io/text_lines.h"
 
 namespace hdprior {
 namespace {
@@ -15,17 +17,6 @@ std::string numberText(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
-}
-
-// True when the whole of `text` is one finite number.
-bool parseNumber(const std::string& text, double& out) {
-  try {
-    size_t used = 0;
-    out = std::stod(text, &used);
-    return used == text.size() && std::isfinite(out);
-  } catch (const std::exception&) {
-    return false;
-  }
 }
 
 std::vector<std::string> commaSeparated(const std::string& text) {
@@ -57,7 +48,9 @@ OdometryDrift parseOdometryDrift(const std::string& text, const std::string& sou
   if (parts.size() < 2 || parts.size() > 3) throw Error(source, "'" + text + "' is not " + kDriftSyntax);
   double values[3] = {0.0, 0.0, 0.0};
   for (size_t i = 0; i < parts.size(); ++i) {
-    if (!parseNumber(parts[i], values[i])) throw Error(source, "'" + parts[i] + "' is not a number (expected " + kDriftSyntax + ")");
+    const std::optional<double> v = parseNumber(parts[i]);
+    if (!v || !std::isfinite(*v)) throw Error(source, "'" + parts[i] + "' is not a number (expected " + kDriftSyntax + ")");
+    values[i] = *v;
   }
   const OdometryDrift drift{values[0], values[1], values[2]};
   if (const std::string problem = odometryDriftProblem(drift); !problem.empty()) throw Error(source, problem);

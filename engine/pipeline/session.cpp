@@ -23,17 +23,6 @@ void checkLog(const ArgoverseLog& log) {
   }
 }
 
-PoseTrajectory groundTruthAt(const ArgoverseLog& log) {
-  std::vector<int64_t> stamps;
-  std::vector<SE3> poses;
-  for (int64_t t : log.sweepTimestamps()) {
-    if (!log.cityTEgo().covers(t)) continue;
-    stamps.push_back(t);
-    poses.push_back(log.cityTEgo().at(t));
-  }
-  return PoseTrajectory(stamps, poses, (log.dir() / "city_SE3_egovehicle.feather").string());
-}
-
 std::vector<SubmapLabel> pointLabels(const LabelledSubmap& submap) {
   std::vector<SubmapLabel> labels(submap.points.size(), SubmapLabel::Other);
   for (size_t i = 0; i < labels.size(); ++i) {
@@ -54,7 +43,7 @@ Session::Session(const ArgoverseLog& log, const HdMap* map, const Config& config
       config.odometry, config.keyframes,
       givenOdometry_ ? givenOdometryAtSweeps(*givenOdometry_, log.sweepTimestamps(), cityTOdom_) : PoseTrajectory{});
   if (map_) priors_ = std::make_unique<PriorStage>(*map_, config, cityTOdom_, givenOdometry_.has_value());
-  groundTruth_ = groundTruthAt(log);
+  groundTruth_ = log.cityTEgoAtSweeps();
 }
 
 Session::~Session() = default;

@@ -8,7 +8,6 @@
 
 #include "engine/io/kitti_trajectory.h"
 #include "engine/io/tum_trajectory.h"
-#include "engine/sim/log_writer.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -51,17 +50,13 @@ std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1)
 class GivenOdometryRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    SimulationOptions sim;
-    sim.townSeed = 1;
-    sim.seconds = 6.0;
-    // ctest runs each test in its own process, in parallel: one folder per process.
-    sim.outDir = test::freshOutputDir("given_run_" + std::to_string(::getpid()));
-    log_ = new fs::path(simulateLog(sim).dir);
-    untimed_ = new fs::path(sim.outDir / "untimed.json");
+    const test::SimulatedDrive drive = test::simulatedTownDrive("given_run", 1, 0, 6.0);
+    log_ = new fs::path(drive.log);
+    untimed_ = new fs::path(drive.folder / "untimed.json");
     std::ofstream(*untimed_) << R"({"match": {"time_budget_ms": 1000000}})";
     // The built-in odometry's drift model for the file (what a plain run's graph uses), and for the
     // built-in odometry that model alone, without its registration covariances (a file has none).
-    sameModel_ = new fs::path(sim.outDir / "same_model.json");
+    sameModel_ = new fs::path(drive.folder / "same_model.json");
     std::ofstream(*sameModel_) << R"({"match": {"time_budget_ms": 1000000},
       "graph": {"given_odometry_translation_sigma_per_m": 1e-4, "given_odometry_rotation_sigma_deg_per_m": 1e-4,
                 "odometry_covariance": false}})";

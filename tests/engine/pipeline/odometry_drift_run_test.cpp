@@ -9,7 +9,6 @@
 #include "engine/eval/trajectory_errors.h"
 #include "engine/io/tum_trajectory.h"
 #include "engine/odom/odometry_drift.h"
-#include "engine/sim/log_writer.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -33,13 +32,9 @@ std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1)
 class OdometryDriftRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    SimulationOptions sim;
-    sim.townSeed = 1;
-    sim.seconds = 6.0;
-    // ctest runs each test in its own process, in parallel: one folder per process.
-    sim.outDir = test::freshOutputDir("drift_run_" + std::to_string(::getpid()));
-    log_ = new fs::path(simulateLog(sim).dir);
-    config_ = new fs::path(sim.outDir / "untimed.json");
+    const test::SimulatedDrive drive = test::simulatedTownDrive("drift_run", 1, 0, 6.0);
+    log_ = new fs::path(drive.log);
+    config_ = new fs::path(drive.folder / "untimed.json");
     std::ofstream(*config_) << R"({"match": {"time_budget_ms": 1000000}})";
   }
   static void TearDownTestSuite() {

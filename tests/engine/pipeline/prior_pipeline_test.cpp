@@ -6,7 +6,6 @@
 
 #include "engine/io/argoverse_log.h"
 #include "engine/pipeline/pipeline_run.h"
-#include "engine/sim/log_writer.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -15,13 +14,7 @@ namespace hdprior {
 class PriorPipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    SimulationOptions sim;
-    sim.townSeed = 1;
-    sim.seed = 1;
-    sim.seconds = 12.0;
-    // ctest runs each test in its own process, in parallel: one folder per process.
-    sim.outDir = test::freshOutputDir("prior_pipeline_" + std::to_string(::getpid()));
-    log_ = std::make_unique<ArgoverseLog>(simulateLog(sim).dir);
+    log_ = std::make_unique<ArgoverseLog>(test::simulatedTownDrive("prior_pipeline", 1, 1, 12.0).log);
   }
   static void TearDownTestSuite() { log_.reset(); }
   static std::unique_ptr<ArgoverseLog> log_;

@@ -11,7 +11,6 @@
 #include "engine/odom/odometry.h"
 #include "engine/pipeline/pipeline_run.h"
 #include "engine/pipeline/session.h"
-#include "engine/sim/log_writer.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -21,12 +20,7 @@ namespace hdprior {
 class SessionTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    SimulationOptions sim;
-    sim.townSeed = 2;
-    sim.seed = 3;
-    sim.seconds = 6.0;
-    sim.outDir = test::freshOutputDir("session_" + std::to_string(::getpid()));
-    log_ = std::make_unique<ArgoverseLog>(simulateLog(sim).dir);
+    log_ = std::make_unique<ArgoverseLog>(test::simulatedTownDrive("session", 2, 3, 6.0).log);
     map_ = loadPriorMap(*log_, Config{});
   }
   static void TearDownTestSuite() {

@@ -15,7 +15,6 @@
 #include "engine/map/hd_map.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/pipeline/session.h"
-#include "engine/sim/log_writer.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -25,12 +24,7 @@ class UnreadableSweeps : public ::testing::Test {
  protected:
   // A 6 s town drive (60 sweeps), simulated once per test process.
   static void SetUpTestSuite() {
-    SimulationOptions sim;
-    sim.townSeed = 2;
-    sim.seed = 3;
-    sim.seconds = 6.0;
-    sim.outDir = test::freshOutputDir("unreadable_" + std::to_string(::getpid()));
-    source_ = new fs::path(simulateLog(sim).dir);
+    source_ = new fs::path(test::simulatedTownDrive("unreadable", 2, 3, 6.0).log);
   }
   static void TearDownTestSuite() { delete source_; }
 
