@@ -42,6 +42,12 @@ Eigen::Matrix4f orthographic(float left, float right, float bottom, float top, f
   return m;
 }
 
+std::optional<double> Camera::metresPerPixel(int viewportHeight) const {
+  const bool orthographic = projection(3, 3) == 1.0f && projection(3, 2) == 0.0f;
+  if (!orthographic || viewportHeight <= 0) return std::nullopt;
+  return 2.0 / (double(projection(1, 1)) * viewportHeight);  // clip y spans 2
+}
+
 Camera topDownCamera(const Eigen::Vector3d& centre, double height, double aspect) {
   const Eigen::Vector3f c = centre.cast<float>();
   const float h = float(height) / 2, w = h * float(aspect);

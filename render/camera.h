@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include <Eigen/Core>
 
 namespace hdprior::render {
@@ -8,6 +10,9 @@ struct Camera {
   Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f viewProjection() const { return projection * view; }
+  // Metres on the ground per pixel of a viewport `viewportHeight` pixels high: the same
+  // everywhere in an orthographic (top-down) view; none for a perspective one.
+  std::optional<double> metresPerPixel(int viewportHeight) const;
 };
 
 // Bird's-eye view: north up, looking down at `centre`, showing `height` metres vertically.

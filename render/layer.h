@@ -1,10 +1,12 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "render/layer_legend.h"
 #include "render/layer_option.h"
 
 namespace hdprior::render {
@@ -41,6 +43,10 @@ class Layer {
   virtual std::vector<LayerOption> options() { return {}; }
   // Lidar points this layer draws (the status bar's count).
   virtual size_t pointCount() const { return 0; }
+  // The colour map it colours by with its range, if any (the overlay's colour bar).
+  virtual std::optional<ColourScale> colourScale() const { return std::nullopt; }
+  // The markers it currently draws (the overlay's legend); empty when it draws none.
+  virtual std::vector<MarkerKey> markerKeys() const { return {}; }
 
   bool visible = true;
   float opacity = 1.0f;

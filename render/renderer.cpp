@@ -7,7 +7,7 @@
 
 namespace hdprior::render {
 
-Renderer::Renderer() : shaders_(std::make_unique<ShaderLibrary>()) {}
+Renderer::Renderer() : shaders_(std::make_unique<ShaderLibrary>()), overlay_(std::make_unique<ViewOverlayDrawer>()) {}
 Renderer::~Renderer() = default;
 
 void Renderer::addLayer(std::unique_ptr<Layer> layer) { layers_.push_back(std::move(layer)); }
@@ -27,6 +27,8 @@ uint64_t Renderer::viewKey(const Camera& camera) {
   const Eigen::Matrix4f vp = camera.viewProjection();
   mix(hash, vp.data(), sizeof(float) * 16);
   mix(hash, &generation_, sizeof generation_);
+  mix(hash, &showOverlay, sizeof showOverlay);
+  mix(hash, &insets_, sizeof insets_);
   for (const auto& layer : layers_) {
     mix(hash, &layer->visible, sizeof layer->visible);
     mix(hash, &layer->opacity, sizeof layer->opacity);
@@ -100,6 +102,7 @@ void Renderer::draw(const Camera& camera, int width, int height, int pointStride
     context.opacity = layer->opacity;
     layer->draw(context);
   }
+  if (showOverlay) overlay_->draw(viewOverlay(layers_, camera, width, height, insets_), *shaders_);
 }
 
 }  // namespace hdprior::render

@@ -6,6 +6,7 @@
 #include "render/analysis.h"
 #include "render/camera.h"
 #include "render/layer.h"
+#include "render/overlays/view_overlay.h"
 #include "render/scene.h"
 
 namespace hdprior::render {
@@ -39,13 +40,20 @@ class Renderer {
   // Changes whenever what draw(camera, ...) would show changes: the camera, the scene and frame
   // data, each layer's visibility, opacity and option values (a cache key, see ViewCache).
   uint64_t viewKey(const Camera& camera);
-  // Clears the viewport and draws the visible layers in order, bottom first.
+  // The app's panels cover these edges of the view: the overlay stays clear of them.
+  void setOverlayInsets(const ScreenInsets& insets) { insets_ = insets; }
+  // Clears the viewport and draws the visible layers in order, bottom first, then (when
+  // showOverlay) the overlay that explains them (render/overlays/view_overlay.h).
   // pointStride > 1: lidar point layers draw every n-th point.
   void draw(const Camera& camera, int width, int height, int pointStride = 1) const;
+
+  bool showOverlay = true;
 
  private:
   std::unique_ptr<ShaderLibrary> shaders_;
   std::vector<std::unique_ptr<Layer>> layers_;
+  std::unique_ptr<ViewOverlayDrawer> overlay_;
+  ScreenInsets insets_;
   Scene scene_;
   Frame frame_;
   Analysis analysis_;

@@ -76,6 +76,7 @@ struct Snapshotter::State {
 Snapshotter::Snapshotter(const ArgoverseLog& log, const HdMap& map, const SnapshotOptions& options)
     : state_(std::make_unique<State>(options, log, map)) {
   state_->renderer.emplace();
+  state_->renderer->showOverlay = options.overlay;
   for (const auto& name : options.layers.empty() ? defaultLayers(options.view) : options.layers) {
     std::unique_ptr<Layer> layer = makeLayer(name);
     if (auto* points = dynamic_cast<RoadPointsLayer*>(layer.get())) points->showNonGround(options.view == View::Inspector);

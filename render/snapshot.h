@@ -30,6 +30,7 @@ struct SnapshotOptions {
   int width = 1280, height = 720;
   View view = View::Top;
   std::vector<std::string> layers;  // names in drawing order; empty = all
+  bool overlay = true;               // colour bars, scale bar and marker legend over the view
 };
 
 // Parses "WIDTHxHEIGHT"; throws Error("option --size", ...) unless both are in 16..8192.
