@@ -36,6 +36,10 @@ void AccumulatedSweepsLayer::draw(const DrawContext& context) const {
   if (points_) drawLidarPoints(context, *points_, pointSize_);
 }
 
+std::optional<ColourScale> AccumulatedSweepsLayer::colourScale() const {
+  return sweepColourScale(SweepColoring(coloring_));
+}
+
 std::vector<LayerOption> AccumulatedSweepsLayer::options() {
   return {LayerOption::intSlider("frames before/after", &window_, 1, 25, true),
           LayerOption::choice("colour by", &coloring_, sweepColoringNames(), true),

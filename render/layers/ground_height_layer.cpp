@@ -24,9 +24,9 @@ std::optional<HeightRange> groundHeightColorRange(const GroundHeight& g) {
 void GroundHeightLayer::setScene(const Scene& scene) {
   if (!scene.map->hasGroundHeight()) return;
   const GroundHeight& g = scene.map->groundHeight();
-  const std::optional<HeightRange> range = groundHeightColorRange(g);
-  if (!range) return;
-  const float lo = range->low, hi = range->high;
+  range_ = groundHeightColorRange(g);
+  if (!range_) return;
+  const float lo = range_->low, hi = range_->high;
 
   std::vector<uint8_t> rgba(g.heights().size() * 4, 0);
   for (size_t i = 0; i < g.heights().size(); ++i) {
@@ -53,6 +53,11 @@ void GroundHeightLayer::setFrame(const Scene& scene, const Frame& frame) {
   for (int i = 0; i < 4; ++i) c[i] = scene.local({corners_[i].x(), corners_[i].y(), frame.groundZ - 0.10});
   const auto vertices = texturedQuad(c);
   quad_->upload(std::span<const TexturedVertex>(vertices));
+}
+
+std::optional<ColourScale> GroundHeightLayer::colourScale() const {
+  if (!quad_) return std::nullopt;
+  return ColourScale{"ground height (city z)", range_->low, range_->high, "m", false, terrain};
 }
 
 void GroundHeightLayer::draw(const DrawContext& context) const {

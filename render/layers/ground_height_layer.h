@@ -29,10 +29,12 @@ class GroundHeightLayer : public Layer {
   void setScene(const Scene& scene) override;
   void setFrame(const Scene& scene, const Frame& frame) override;
   void draw(const DrawContext& context) const override;
+  std::optional<ColourScale> colourScale() const override;
 
  private:
   std::unique_ptr<GpuTexture> texture_;
   std::unique_ptr<GpuMesh> quad_;
+  std::optional<HeightRange> range_;
   std::array<Eigen::Vector2d, 4> corners_;  // city x, y of the raster corners (uv order)
 };
 

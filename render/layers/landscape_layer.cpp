@@ -22,6 +22,8 @@ void LandscapeLayer::build(const Scene& scene) {
   const Analysis& analysis = *analysis_;
   const CostLandscape& l = *analysis.landscape;
   const auto [lo, hi] = std::minmax_element(l.scores.begin(), l.scores.end());
+  low_ = *lo;
+  high_ = *hi;
   const double range = std::max(*hi - *lo, 1e-12);
   std::vector<uint8_t> texels;
   texels.reserve(l.scores.size() * 4);
@@ -45,6 +47,11 @@ void LandscapeLayer::build(const Scene& scene) {
 
 void LandscapeLayer::draw(const DrawContext& context) const {
   if (!empty_) drawTextured(context, *quad_, *texture_, Eigen::Vector4f::Ones());
+}
+
+std::optional<ColourScale> LandscapeLayer::colourScale() const {
+  if (empty_) return std::nullopt;
+  return ColourScale{"NDT score, higher = better", low_, high_, "", false, turbo};
 }
 
 std::vector<LayerOption> LandscapeLayer::options() { return {LayerOption::choice("texels", &smooth_, {"cells", "smooth"}, true)}; }

@@ -18,6 +18,7 @@ class LandscapeLayer : public Layer {
   void setAnalysis(const Scene& scene, const Analysis& analysis) override;
   void draw(const DrawContext& context) const override;
   std::vector<LayerOption> options() override;
+  std::optional<ColourScale> colourScale() const override;
 
  private:
   void build(const Scene& scene);
@@ -27,6 +28,7 @@ class LandscapeLayer : public Layer {
   std::unique_ptr<GpuTexture> texture_;
   int smooth_ = 0;
   bool empty_ = true;
+  double low_ = 0, high_ = 0;  // the scores at the two ends of the colour map
 };
 
 }  // namespace hdprior::render

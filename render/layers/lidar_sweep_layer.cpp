@@ -21,6 +21,8 @@ void LidarSweepLayer::draw(const DrawContext& context) const {
   if (points_) drawLidarPoints(context, *points_, pointSize_);
 }
 
+std::optional<ColourScale> LidarSweepLayer::colourScale() const { return sweepColourScale(SweepColoring(coloring_)); }
+
 std::vector<LayerOption> LidarSweepLayer::options() {
   return {LayerOption::choice("colour by", &coloring_, sweepColoringNames(), true),
           LayerOption::slider("point size", &pointSize_, 1.0f, 6.0f)};

@@ -16,6 +16,7 @@ class LidarSweepLayer : public Layer {
   void setFrame(const Scene& scene, const Frame& frame) override;
   void draw(const DrawContext& context) const override;
   std::vector<LayerOption> options() override;
+  std::optional<ColourScale> colourScale() const override;
   size_t pointCount() const override { return points_ ? points_->size() : 0; }
 
  private:

@@ -77,6 +77,13 @@ void MatchLayer::draw(const DrawContext& context) const {
   if (dots_->size() > 0) drawColored(context, *dots_, Primitive::Points, dotSize_, true);
 }
 
+std::vector<MarkerKey> MatchLayer::markerKeys() const {
+  if (!analysis_ || !analysis_->inspection) return {};
+  std::vector<MarkerKey> keys = {{"start", start_}, {"estimate", estimate_}};
+  if (analysis_->inspection->truth) keys.push_back({"truth", truth_});
+  return keys;
+}
+
 std::vector<LayerOption> MatchLayer::options() {
   std::vector<LayerOption> o = {LayerOption::slider("line width (m)", &width_, 0.01f, 0.5f),
                                 LayerOption::slider("heading tick (m)", &tick_, 0.2f, 5.0f),

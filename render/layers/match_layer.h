@@ -18,6 +18,7 @@ class MatchLayer : public Layer {
   void setAnalysis(const Scene& scene, const Analysis& analysis) override;
   void draw(const DrawContext& context) const override;
   std::vector<LayerOption> options() override;
+  std::vector<MarkerKey> markerKeys() const override;
 
  private:
   void build(const Scene& scene);

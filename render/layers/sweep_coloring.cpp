@@ -15,6 +15,13 @@ float laserShade(uint8_t laser) { return float((laser * 23) % 64) / 63.0f; }
 
 }  // namespace
 
+std::optional<ColourScale> sweepColourScale(SweepColoring coloring) {
+  if (coloring == SweepColoring::Height)
+    return ColourScale{"lidar: height above ground", kSweepHeightLow, kSweepHeightHigh, "m", false, turbo};
+  if (coloring == SweepColoring::Intensity) return ColourScale{"lidar: intensity", 0.0, kSweepIntensityHigh, "", true, turbo};
+  return std::nullopt;
+}
+
 std::vector<ColoredVertex> sweepVertices(const Scene& scene, const LidarSweep& sweep, const SE3& cityTEgo,
                                          double egoGroundZ, SweepColoring coloring) {
   std::vector<ColoredVertex> vertices;

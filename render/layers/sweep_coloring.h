@@ -1,9 +1,11 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/geom/se3.h"
 #include "render/gpu_mesh.h"
+#include "render/layer_legend.h"
 
 namespace hdprior {
 struct LidarSweep;
@@ -24,6 +26,9 @@ inline const std::vector<std::string>& sweepColoringNames() {
 inline constexpr float kSweepHeightLow = -0.5f, kSweepHeightHigh = 4.0f;
 // Intensities at or above this get the top colour (most returns are far below 255).
 inline constexpr float kSweepIntensityHigh = 100.0f;
+
+// The colour bar of a colouring; none for laser numbers (a colour per ring, not a scale).
+std::optional<ColourScale> sweepColourScale(SweepColoring coloring);
 
 // The sweep's points in the scene frame, placed with `cityTEgo`; `egoGroundZ` (city) stands in
 // for the ground outside the height raster.
