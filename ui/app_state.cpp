@@ -32,8 +32,6 @@ void AppState::open(LoadedLog loaded) {
   for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));
   renderer_->setScene(scene_);
   layerVisibility_.reset(renderer_->layers());
-  groundColorRange_.reset();
-  if (loaded_.map->hasGroundHeight()) groundColorRange_ = render::groundHeightColorRange(loaded_.map->groundHeight());
   playback = Playback{};
   camera = ViewCamera{};
   error.reset();

@@ -7,7 +7,6 @@
 #include <Eigen/Core>
 
 #include "engine/error.h"
-#include "render/layers/ground_height_layer.h"
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "ui/layer_visibility.h"
@@ -62,7 +61,6 @@ class AppState {
   render::Layer* layer(const std::string& name);
   // The user showing or hiding a layer (the panel's checkbox, a script's `layer` command).
   void setLayerVisible(render::Layer& layer, bool visible) { layerVisibility_.setByUser(layer, visible); }
-  const std::optional<render::HeightRange>& groundColorRange() const { return groundColorRange_; }
 
   // The tuning bench of the open log (its pipeline session, tuned config, selected keyframe).
   TuningBench& bench() { return *bench_; }
@@ -88,7 +86,6 @@ class AppState {
   LoadedLog loaded_;
   render::Scene scene_;
   std::unique_ptr<render::Renderer> renderer_;
-  std::optional<render::HeightRange> groundColorRange_;
   LayerVisibility layerVisibility_;
   std::unique_ptr<TuningBench> bench_;
 };

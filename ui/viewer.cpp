@@ -21,9 +21,9 @@
 #include "render/window_context.h"
 #include "ui/camera_input.h"
 #include "ui/panels/bench_panel.h"
-#include "ui/panels/height_legend.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/open_log_panel.h"
+#include "ui/panels/panel_layout.h"
 #include "ui/panels/plots_panel.h"
 #include "ui/panels/status_bar.h"
 #include "ui/panels/timeline_panel.h"
@@ -199,7 +199,6 @@ void Viewer::drawPanels() {
   drawPlotsPanel(*state_);
   drawTimelinePanel(*state_);
   drawStatusBar(*state_);
-  drawHeightLegend(*state_);
 }
 
 void Viewer::takeScreenshot(const std::filesystem::path& file) {
@@ -238,6 +237,7 @@ void Viewer::frame() {
                            ? int(std::max<size_t>(1, (points + options_.interactivePoints - 1) / options_.interactivePoints))
                            : 1;
     const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
+    state_->renderer().setOverlayInsets(viewInsets(ImGui::GetIO().DisplayFramebufferScale.x));
     viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h, stride); });
   } else {
     render::clearView(w, h);
