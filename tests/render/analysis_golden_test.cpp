@@ -46,8 +46,9 @@ struct AnalysedLog {
     render::inspect(analysis, session, *map, keyframe);
   }
 
-  render::Image snapshot(render::View view, const std::string& layers) const {
-    render::SnapshotOptions options{640, 360, view, layers.empty() ? std::vector<std::string>{} : render::parseLayerList(layers)};
+  render::Image snapshot(render::View view, const std::string& layers, bool overlay = true) const {
+    render::SnapshotOptions options{640, 360, view, layers.empty() ? std::vector<std::string>{} : render::parseLayerList(layers),
+                                    overlay};
     render::Snapshotter snapshotter(*log, *map, options);
     snapshotter.setAnalysis(analysis);
     return snapshotter.render(analysis.inspection->frame);
@@ -113,6 +114,24 @@ TEST_F(AnalysisGolden, FailsWhenAnAnalysisLayerIsSwitchedOff) {
   const std::string noPoints =
       checkGolden(real().snapshot(render::View::Top, "drivable,boundary,keyframes,match,ego"), "real_top_road_points_match");
   EXPECT_NE(noPoints.find("differ"), std::string::npos) << noPoints;
+}
+
+// The goldens show the overlay: the landscape view's colour bar, scale bar and marker legend. Without
+// them the same view fails against its golden, and the bar's corner holds Turbo's blue and red.
+TEST_F(AnalysisGolden, GoldensShowTheColourBarScaleBarAndLegend) {
+  if (updatingGoldens()) GTEST_SKIP() << "regenerating goldens";
+  const std::string bare = checkGolden(real().snapshot(render::View::Landscape, "", false), "real_landscape_view");
+  EXPECT_NE(bare.find("differ"), std::string::npos) << bare;
+  const render::Image golden = readPng(std::filesystem::path(HDPRIOR_GOLDEN_DIR) / "real_landscape_view.png");
+  size_t blue = 0, red = 0;  // Turbo's ends, in the bottom-right quarter where the colour bar sits
+  for (int y = golden.height * 3 / 4; y < golden.height; ++y)
+    for (int x = golden.width * 3 / 4; x < golden.width; ++x) {
+      const uint8_t* p = golden.pixel(x, y);
+      blue += p[2] > 150 && p[0] < 90 && p[1] < 120;
+      red += p[0] > 120 && p[1] < 60 && p[2] < 40;
+    }
+  EXPECT_GT(blue, 20u);
+  EXPECT_GT(red, 20u);
 }
 
 TEST_F(AnalysisGolden, AnalysisHoldsPerPoseErrorsAndKeyframesAndRefusesABadKeyframe) {
