@@ -53,7 +53,9 @@ void stack(ScreenCanvas& canvas, const std::vector<OverlayBlock>& blocks, const 
 
 ScreenCanvas viewOverlay(const std::vector<std::unique_ptr<Layer>>& layers, const Camera& camera, int width, int height,
                          const ScreenInsets& insets) {
-  ScreenCanvas canvas(width, height, int(std::lround(height / 360.0)));
+  // One font pixel per whole 360 rows left free: 1280 x 720 snapshots get 2, the app's view between
+  // its panels 1, like the panels' own text.
+  ScreenCanvas canvas(width, height, int((height - insets.top - insets.bottom) / 360.0f));
   const float margin = 8 * canvas.unit();
   const Eigen::AlignedBox2f area(Eigen::Vector2f(insets.left + margin, insets.top + margin),
                                  Eigen::Vector2f(width - insets.right - margin, height - insets.bottom - margin));

@@ -18,7 +18,7 @@ struct ScreenInsets {
 // What is drawn over the 3-D view so that it explains itself, from the visible layers and the
 // camera: the legend of the markers drawn (top left), a metre scale bar in top-down views
 // (bottom left) and the colour bar of every distinct colour scale (bottom right), each on a dark
-// translucent box. Sizes follow the viewport height (one font pixel per 360 rows).
+// translucent box. Sizes follow the height of the free part of the viewport.
 ScreenCanvas viewOverlay(const std::vector<std::unique_ptr<Layer>>& layers, const Camera& camera, int width,
                          int height, const ScreenInsets& insets = {});
 
