@@ -111,6 +111,24 @@ TEST(ViewCommand, ScriptedSessionUnderXvfbShowsMapPointsAndPanels) {
   const Content top = measure(readPng(final));
   EXPECT_GT(top.lidarColors, 0.005);
   EXPECT_GT(top.distinctColors, 3000u);
+
+  // The view's overlay in the part of the window the panels leave free (x 310..920, y 0..542):
+  // colour-bar labels at its bottom right in both views, the scale bar at its bottom left only
+  // in the top-down one.
+  const auto overlayText = [](const render::Image& shot, int x0, int y0, int x1, int y1) {
+    size_t n = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        const uint8_t* p = shot.pixel(x, y);
+        n += p[0] >= 225 && p[0] <= 245 && std::abs(p[0] - p[1]) < 6 && std::abs(p[1] - p[2]) < 6;
+      }
+    return n;
+  };
+  const render::Image orbitShot = readPng(all), topShot = readPng(final);
+  EXPECT_GT(overlayText(orbitShot, 700, 440, 920, 542), 100u) << "no colour bar labels";
+  EXPECT_GT(overlayText(topShot, 700, 440, 920, 542), 100u) << "no colour bar labels";
+  EXPECT_GT(overlayText(topShot, 310, 480, 560, 542), 2 * overlayText(orbitShot, 310, 480, 560, 542) + 50)
+      << "no scale bar in the top-down view";
 }
 
 // The numbers after `key` in text, e.g. "estimate 1 2 3" -> {1, 2, 3}.
