@@ -32,11 +32,12 @@ void EstimatedTrajectoryLayer::build(const Scene& scene) {
       for (double e : errors)
         if (std::isfinite(e)) top = std::max(top, e);
     }
+    top_ = std::max(top, 1e-6);
     for (size_t i = 0; i < trajectory.size(); ++i) {
       Eigen::Vector4f c = Eigen::Vector4f::Ones();
       if (byError_) {
         const double e = i < errors.size() ? errors[i] : NAN;
-        c = std::isfinite(e) ? Eigen::Vector4f(turbo(float(e / std::max(top, 1e-6))).homogeneous())
+        c = std::isfinite(e) ? Eigen::Vector4f(turbo(float(e / top_)).homogeneous())
                              : Eigen::Vector4f(0.5f, 0.5f, 0.5f, 1.0f);
       }
       vertices.push_back({scene.local(trajectory.poses()[i].translation()), c});
@@ -50,6 +51,11 @@ void EstimatedTrajectoryLayer::draw(const DrawContext& context) const {
   const Eigen::Vector4f tint = byError_ ? Eigen::Vector4f::Ones() : color_;
   drawColored(context, *line_, Primitive::LineStrip, 1.0f, false, tint);
   drawColored(context, *line_, Primitive::Points, 3.0f, true, tint);
+}
+
+std::optional<ColourScale> EstimatedTrajectoryLayer::colourScale() const {
+  if (!byError_ || !line_ || line_->size() == 0) return std::nullopt;
+  return ColourScale{which_ == Which::Odometry ? "odometry ATE" : "optimised ATE", 0.0, top_, "m", false, turbo};
 }
 
 std::vector<LayerOption> EstimatedTrajectoryLayer::options() {

@@ -20,6 +20,7 @@ class EstimatedTrajectoryLayer : public Layer {
   void setAnalysis(const Scene& scene, const Analysis& analysis) override;
   void draw(const DrawContext& context) const override;
   std::vector<LayerOption> options() override;
+  std::optional<ColourScale> colourScale() const override;
 
  private:
   void build(const Scene& scene);
@@ -29,6 +30,7 @@ class EstimatedTrajectoryLayer : public Layer {
   std::unique_ptr<GpuMesh> line_;
   int byError_ = 0;
   float errorMax_ = 0.0f;  // metres at the top of the colour map; 0: the largest error
+  double top_ = 0.0;       // the error drawn at the top of the colour map
   Eigen::Vector4f color_;
 };
 

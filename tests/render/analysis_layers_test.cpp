@@ -38,6 +38,7 @@ class AnalysisLayers : public ::testing::Test {
                             const std::function<void(render::Layer&)>& adjust = {}) {
     render::OffscreenContext context(1280, 720);
     render::Renderer renderer;
+    renderer.showOverlay = false;  // the layers alone: a colour bar holds every colour of its map
     for (const auto& name : render::parseLayerList(layers)) renderer.addLayer(render::makeLayer(name));
     if (adjust)
       for (const auto& layer : renderer.layers()) adjust(*layer);
@@ -121,6 +122,28 @@ TEST_F(AnalysisLayers, TrajectoryColouredByErrorUsesTheColourMap) {
     option("error range (m, 0: largest)", 5.0f, 0)(l);
   });
   EXPECT_EQ(count(fixed, red), 0u);
+}
+
+// Coloured by its error, a trajectory names its colour map for the overlay's colour bar: Turbo from
+// 0 to the largest error, or to the fixed range; in its own colour, none.
+TEST_F(AnalysisLayers, TrajectoryColouredByErrorReportsItsColourScale) {
+  render::OffscreenContext context(64, 64);
+  render::Analysis a;
+  a.odometry = PoseTrajectory({0, 100'000'000}, {offsetFromFrame0(0, 0), offsetFromFrame0(1, 0)}, "odometry");
+  a.odometryError = {0.2, 1.5};
+  std::unique_ptr<render::Layer> layer = render::makeLayer("odometry_trajectory");
+  const render::Scene scene = render::makeScene(*log_, *map_);
+  layer->setAnalysis(scene, a);
+  EXPECT_FALSE(layer->colourScale());
+  option("colour by", 0, 1)(*layer);
+  layer->setAnalysis(scene, a);
+  ASSERT_TRUE(layer->colourScale());
+  EXPECT_EQ(layer->colourScale()->low, 0.0);
+  EXPECT_DOUBLE_EQ(layer->colourScale()->high, 1.5);
+  EXPECT_EQ(layer->colourScale()->unit, "m");
+  option("error range (m, 0: largest)", 5.0f, 0)(*layer);
+  layer->setAnalysis(scene, a);
+  EXPECT_DOUBLE_EQ(layer->colourScale()->high, 5.0);
 }
 
 // A match along a straight road observes no along direction: its ellipse is drawn at the length
