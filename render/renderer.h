@@ -38,7 +38,8 @@ class Renderer {
   // Lidar points of the visible layers.
   size_t pointsDrawn() const;
   // Changes whenever what draw(camera, ...) would show changes: the camera, the scene and frame
-  // data, each layer's visibility, opacity and option values (a cache key, see ViewCache).
+  // data, each layer's visibility, opacity and option values, the overlay's switch and insets
+  // (a cache key, see ViewCache).
   uint64_t viewKey(const Camera& camera);
   // The app's panels cover these edges of the view: the overlay stays clear of them.
   void setOverlayInsets(const ScreenInsets& insets) { insets_ = insets; }

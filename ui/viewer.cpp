@@ -236,8 +236,8 @@ void Viewer::frame() {
     const int stride = moving && options_.interactivePoints > 0
                            ? int(std::max<size_t>(1, (points + options_.interactivePoints - 1) / options_.interactivePoints))
                            : 1;
-    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
     state_->renderer().setOverlayInsets(viewInsets(ImGui::GetIO().DisplayFramebufferScale.x));
+    const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
     viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h, stride); });
   } else {
     render::clearView(w, h);

@@ -56,7 +56,7 @@ void GroundHeightLayer::setFrame(const Scene& scene, const Frame& frame) {
 }
 
 std::optional<ColourScale> GroundHeightLayer::colourScale() const {
-  if (!quad_) return std::nullopt;
+  if (!range_) return std::nullopt;
   return ColourScale{"ground height (city z)", range_->low, range_->high, "m", false, terrain};
 }
 

@@ -30,8 +30,8 @@ TEST(GlLoader, NamesTheFirstMissingFunction) {
   render::OffscreenContext reload(16, 16);  // the table is the offscreen context's again
 }
 
-// The app's view cache key: changes with the camera, the frame and every layer setting, and
-// only then.
+// The app's view cache key: changes with the camera, the frame, every layer setting and the
+// overlay's, and only then.
 TEST(RendererViewKey, ChangesExactlyWhenTheViewWould) {
   const ArgoverseLog log(sharedLog());
   const HdMap map = HdMap::load(log.mapFiles(), render::renderMapOptions());
@@ -58,6 +58,13 @@ TEST(RendererViewKey, ChangesExactlyWhenTheViewWould) {
   sweep.opacity = 0.5f;
   EXPECT_NE(renderer.viewKey(camera), key);
   sweep.opacity = 1.0f;
+  renderer.showOverlay = false;
+  EXPECT_NE(renderer.viewKey(camera), key);
+  renderer.showOverlay = true;
+  renderer.setOverlayInsets({310, 0, 360, 258});  // the app's panels
+  EXPECT_NE(renderer.viewKey(camera), key);
+  renderer.setOverlayInsets({});
+  EXPECT_EQ(renderer.viewKey(camera), key);
   *sweep.options().front().integer = 1;  // colour by intensity
   EXPECT_NE(renderer.viewKey(camera), key);
   *sweep.options().front().integer = 0;
