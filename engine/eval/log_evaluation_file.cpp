@@ -10,24 +10,23 @@ namespace {
 
 using nlohmann::json;
 
-// JSON has no infinity or NaN: they are written as null (an unobservable direction's sigma is
-// +infinity) and read back as `nonFinite`.
-json value(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+// JSON has no infinity or NaN: nlohmann writes them as null (an unobservable direction's sigma is
+// +infinity), which Reader reads back as the field's `nonFinite`.
 
 json statsJson(const ErrorStats& s) {
-  return {{"count", s.count}, {"mean", value(s.mean)}, {"median", value(s.median)}, {"rmse", value(s.rmse)},
-          {"std", value(s.std)}, {"max", value(s.max)}};
+  return {{"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"rmse", s.rmse},
+          {"std", s.std}, {"max", s.max}};
 }
 
 json rpeJson(const RpeResult& r) {
-  return {{"length_m", value(r.length)}, {"segments", r.segments}, {"translation_percent", value(r.translationPercent)},
-          {"yaw_deg_per_100m", value(r.yawDegPer100m)}, {"rotation_deg_per_100m", value(r.rotationDegPer100m)}};
+  return {{"length_m", r.length}, {"segments", r.segments}, {"translation_percent", r.translationPercent},
+          {"yaw_deg_per_100m", r.yawDegPer100m}, {"rotation_deg_per_100m", r.rotationDegPer100m}};
 }
 
 json trajectoryJson(const TrajectoryEvaluation& e) {
   return {{"label", e.label},
-          {"scale", value(e.scale)},
-          {"path_length_m", value(e.pathLength)},
+          {"scale", e.scale},
+          {"path_length_m", e.pathLength},
           {"ate_translation_m", statsJson(e.ate.translation)},
           {"ate_rotation_deg", statsJson(e.ate.rotationDeg)},
           {"ate_lateral_m", statsJson(e.ate.lateral)},
@@ -36,8 +35,8 @@ json trajectoryJson(const TrajectoryEvaluation& e) {
 }
 
 json priorErrorJson(const MatchErrorSample& s) {
-  return {{"error", {value(s.error(0)), value(s.error(1)), value(s.error(2))}},
-          {"sigma", {value(s.sigma(0)), value(s.sigma(1)), value(s.sigma(2))}}};
+  return {{"error", {s.error(0), s.error(1), s.error(2)}},
+          {"sigma", {s.sigma(0), s.sigma(1), s.sigma(2)}}};
 }
 
 // Reading: every field is required; `where` names it in the error.
@@ -127,7 +126,7 @@ void writeLogEvaluation(const std::filesystem::path& file, const LogEvaluation& 
     json priors = json::array();
     for (const MatchErrorSample& s : log.priorErrors) priors.push_back(priorErrorJson(s));
     j["prior_errors"] = priors;
-    j["pipeline_s"] = value(log.pipelineSeconds);
+    j["pipeline_s"] = log.pipelineSeconds;
   }
   writeFileAtomically(file, j.dump(1) + "\n");
 }
