@@ -154,9 +154,9 @@ int reportShard(const Batch& batch, EvalShard shard, const fs::path& dir, const 
     ++failed;
     std::fprintf(stderr, "hdprior eval: log %s: %s\n", e.id.c_str(), e.error.c_str());
   }
-  std::printf("shard %zu/%zu: %zu logs, %zu failed; each log's result in %s; when every shard is done: hdprior merge %s --logs %s\n",
-              shard.index, shard.count, results.size(), failed, batch.out.string().c_str(), batch.out.string().c_str(),
-              dir.string().c_str());
+  std::printf("shard %zu/%zu: %zu %s, %zu failed; each log's result in %s; when every shard is done: hdprior merge %s --logs %s\n",
+              shard.index, shard.count, results.size(), results.size() == 1 ? "log" : "logs", failed, batch.out.string().c_str(),
+              batch.out.string().c_str(), dir.string().c_str());
   return failed ? 2 : 0;
 }
 

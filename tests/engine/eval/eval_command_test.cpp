@@ -233,7 +233,7 @@ TEST_F(EvalCommand, ShardsThenMergeGiveOneEvalsResultsAndSkipExistingRedoesOnlyT
   EXPECT_FALSE(fs::exists(sharded / "per_log.csv"));  // a shard writes no table
   const auto shard1 = test::runHdprior("eval " + dir_->string() + " --out " + sharded.string() + " --shard 1/2");
   EXPECT_EQ(shard1.status, 0) << shard1.err;
-  EXPECT_NE(shard1.out.find("shard 1/2: 1 logs, 0 failed"), std::string::npos) << shard1.out;
+  EXPECT_NE(shard1.out.find("shard 1/2: 1 log, 0 failed"), std::string::npos) << shard1.out;
 
   const auto merged = test::runHdprior("merge " + sharded.string() + " --logs " + dir_->string());
   EXPECT_EQ(merged.status, 2) << merged.err;
