@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # A single-node Slurm (munged, slurmctld, slurmd from Debian's packages) in a temporary folder, for
 # tests. Source it, then: start_slurm DIR (exports SLURM_CONF; fails with one line naming the
 # reason) and stop_slurm (scontrol shutdown, stop munged; safe to call twice, from a trap).
@@ -73,6 +74,7 @@ start_slurm() {
   for tool in munged munge slurmctld slurmd sbatch scontrol sinfo; do
     command -v "$tool" >/dev/null || slurm_fail "$tool not found (scripts/install-deps.sh installs it)" || return 1
   done
+  id munge >/dev/null 2>&1 || slurm_fail "no munge user (the munge package creates it)" || return 1
   mkdir -p "$dir/state" "$dir/spool" "$dir/log"
   start_munged "$dir" || return 1
   write_slurm_conf "$dir" || return 1

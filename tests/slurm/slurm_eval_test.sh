@@ -8,7 +8,7 @@ set -euo pipefail
 hdprior=$(realpath "$1")
 scripts=$(realpath "$2")
 here=$(dirname "$(realpath "$0")")
-# shellcheck source=single_node_slurm.sh
+# shellcheck source=tests/slurm/single_node_slurm.sh
 source "$here/single_node_slurm.sh"
 
 tmp=$(mktemp -d /tmp/hdprior-slurm-test.XXXXXX)
@@ -18,6 +18,7 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
+trap 'exit 143' TERM INT  # through the EXIT trap
 fail() {
   echo "FAIL: $*" >&2
   exit 1
