@@ -15,6 +15,7 @@ int runMatch(const std::vector<std::string>& args);
 int runView(const std::vector<std::string>& args);
 int runDemo(const std::vector<std::string>& args);
 int runEval(const std::vector<std::string>& args);
+int runMerge(const std::vector<std::string>& args);
 int runDegradeTrajectory(const std::vector<std::string>& args);
 
 }  // namespace hdprior::app

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <map>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -11,12 +10,14 @@
 #include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/eval_logs.h"
+#include "app/eval_merge.h"
 #include "engine/error.h"
-#include "engine/eval/eval_report.h"
-#include "engine/io/file_bytes.h"
-#include "engine/io/log_discovery.h"
+#include "engine/eval/eval_shard.h"
+#include "engine/eval/log_evaluation_file.h"
+#include "engine/io/log_map_files.h"
+#include "engine/io/partial_folder.h"
 #include "engine/pipeline/log_run.h"
-#include "render/png_writer.h"
 
 namespace hdprior::app {
 namespace {
@@ -26,12 +27,13 @@ namespace fs = std::filesystem;
 constexpr double kNoTimeBudgetMs = 1e6;  // the largest the configuration accepts
 
 struct Batch {
-  std::vector<fs::path> logs;
+  std::vector<fs::path> logs;  // this shard's
   Config config;
   PipelineOptions options;
   fs::path out;
   std::optional<fs::path> odometryDir;  // --odometry-dir: each log's trajectory file
   OdometryFileOptions odometryFile;
+  bool skipExisting = false;
 };
 
 // D/<log id>.tum or D/<log id>.txt; a log with neither (or both) is that log's error.
@@ -43,28 +45,45 @@ fs::path logTrajectoryFile(const fs::path& dir, const std::string& id) {
   return hasTum ? tum : txt;
 }
 
-// Output folders are named by log id, so two logs with one id would overwrite each other.
-void requireUniqueIds(const std::vector<fs::path>& logs) {
-  std::map<std::string, fs::path> seen;
-  for (const fs::path& log : logs) {
-    const auto [it, fresh] = seen.emplace(log.filename().string(), log);
-    if (!fresh) throw Error(log.string(), "has the same log id as " + it->second.string());
-  }
-}
-
+// The log run into a temporary folder that replaces OUT/<log id> when complete.
 LogEvaluation evaluateLog(const Batch& batch, const fs::path& dir) {
   try {
     const ArgoverseLog log(dir);
     PipelineOptions options = batch.options;
     if (batch.odometryDir) options.givenOdometry = givenOdometryOf(logTrajectoryFile(*batch.odometryDir, log.id()), batch.odometryFile, log);
-    return logEvaluation(log, runAndWriteLog(log, batch.config, options, batch.out / log.id()));
+    PartialFolder folder(batch.out / log.id());
+    LogEvaluation e = logEvaluation(log, runAndWriteLog(log, batch.config, options, folder.path()));
+    fs::remove(logEvaluationFile(batch.out, log.id()));  // it describes the folder about to be replaced
+    folder.publish();
+    return e;
   } catch (const Error& e) {
     LogEvaluation failed;
-    failed.id = dir.filename().string();
+    failed.id = logIdOfFolder(dir);
     failed.path = dir;
     failed.error = e.what();
     return failed;
   }
+}
+
+// The result file comes last, so it always describes the run folder beside it; a failed log
+// leaves no run folder (one from an earlier run is removed).
+void storeResult(const fs::path& out, const LogEvaluation& e) {
+  if (!e.ok()) fs::remove_all(out / e.id);
+  writeLogEvaluation(logEvaluationFile(out, e.id), e);
+}
+
+// --skip-existing: the stored result of a log that went through before, if any. A result file
+// that cannot be read counts as missing: the log runs again and replaces it.
+std::optional<LogEvaluation> storedSuccess(const fs::path& out, const fs::path& dir) {
+  const std::string id = logIdOfFolder(dir);
+  const fs::path file = logEvaluationFile(out, id);
+  if (!fs::exists(file) || !fs::is_directory(out / id)) return std::nullopt;
+  try {
+    LogEvaluation e = readLogEvaluation(file);
+    if (e.ok() && e.id == id) return e;
+  } catch (const Error&) {
+  }
+  return std::nullopt;
 }
 
 std::string progressLine(const LogEvaluation& e, double seconds) {
@@ -94,9 +113,20 @@ std::vector<LogEvaluation> evaluateLogs(const Batch& batch, size_t jobs) {
     for (size_t i = next++; i < batch.logs.size() && !stop; i = next++) {
       try {
         const auto start = std::chrono::steady_clock::now();
-        results[i] = evaluateLog(batch, batch.logs[i]);
+        const std::optional<LogEvaluation> stored = batch.skipExisting ? storedSuccess(batch.out, batch.logs[i]) : std::nullopt;
+        if (stored) {
+          results[i] = *stored;
+        } else {
+          results[i] = evaluateLog(batch, batch.logs[i]);
+          storeResult(batch.out, results[i]);
+        }
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const std::lock_guard lock(mutex);
+        if (stored) {
+          std::fprintf(stderr, "[%zu/%zu] %s: went through before, kept (--skip-existing)\n", ++finished, batch.logs.size(),
+                       stored->id.c_str());
+          continue;
+        }
         for (const std::string& skipped : results[i].skippedSweeps) {
           std::fprintf(stderr, "hdprior eval: log %s: warning: skipped %s\n", results[i].id.c_str(), skipped.c_str());
         }
@@ -116,28 +146,37 @@ std::vector<LogEvaluation> evaluateLogs(const Batch& batch, size_t jobs) {
   return results;
 }
 
-render::Image rgba(const RgbImage& im) {
-  render::Image out{im.width, im.height, std::vector<uint8_t>(size_t(im.width) * size_t(im.height) * 4, 255)};
-  for (size_t p = 0; p < size_t(im.width) * size_t(im.height); ++p) {
-    for (size_t c = 0; c < 3; ++c) out.rgba[p * 4 + c] = im.rgb[p * 3 + c];
+// A shard reports its own logs; the tables come from `merge` once every shard is done.
+int reportShard(const Batch& batch, EvalShard shard, const fs::path& dir, const std::vector<LogEvaluation>& results) {
+  size_t failed = 0;
+  for (const LogEvaluation& e : results) {
+    if (e.ok()) continue;
+    ++failed;
+    std::fprintf(stderr, "hdprior eval: log %s: %s\n", e.id.c_str(), e.error.c_str());
   }
-  return out;
+  std::printf("shard %zu/%zu: %zu %s, %zu failed; each log's result in %s; when every shard is done: hdprior merge %s --logs %s\n",
+              shard.index, shard.count, results.size(), results.size() == 1 ? "log" : "logs", failed, batch.out.string().c_str(),
+              batch.out.string().c_str(), dir.string().c_str());
+  return failed ? 2 : 0;
 }
 
 }  // namespace
 
 int runEval(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "odometry-drift", "odometry-dir", "odometry-format", "odometry-frame"},
-                              .flags = {"no-prior", "keep-time-budget"},
+  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "shard", "odometry-drift", "odometry-dir", "odometry-format",
+                                         "odometry-frame"},
+                              .flags = {"no-prior", "keep-time-budget", "skip-existing"},
                               .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--config FILE] [--no-prior] [--keep-time-budget] "
-                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] [--odometry-dir D "
-                                       "[--odometry-format tum|kitti] [--odometry-frame first|city]]",
+                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--shard I/N] [--skip-existing] [--config FILE] [--no-prior] "
+                                       "[--keep-time-budget] [--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] "
+                                       "[--odometry-dir D [--odometry-format tum|kitti] [--odometry-frame first|city]]",
                               .shortNames = {{'j', "jobs"}}});
   Batch batch;
   batch.out = outputFolder(cl.required("out"));
   const long long jobs = cl.integer("jobs", std::max(1u, std::thread::hardware_concurrency()));
   if (jobs < 1) throw Error("option --jobs", "must be at least 1");
+  const std::optional<EvalShard> shard = cl.has("shard") ? std::optional(parseEvalShard(*cl.value("shard"))) : std::nullopt;
+  batch.skipExisting = cl.has("skip-existing");
   batch.config = configOption(cl);
   // The matcher's wall-clock budget rejects matches that run long on a loaded machine, which would
   // make a log's result depend on the number of workers and whatever else runs.
@@ -149,24 +188,14 @@ int runEval(const std::vector<std::string>& args) {
     batch.odometryDir = *d;
   }
   const fs::path dir = cl.positional()[0];
-  batch.logs = findArgoverseLogs(dir);
-  if (batch.logs.empty()) throw Error(dir.string(), "no Argoverse 2 logs under it");
-  requireUniqueIds(batch.logs);
+  const std::vector<fs::path> logs = evalLogs(dir);
+  batch.logs = logsOfShard(logs, shard.value_or(EvalShard{}));
   fs::create_directories(batch.out);
 
+  // A plain eval is the one shard of all the logs, then the merge.
   const std::vector<LogEvaluation> results = evaluateLogs(batch, size_t(jobs));
-  const EvalSummary summary = summarizeLogs(results);
-  writeFileAtomically(batch.out / "per_log.csv", perLogCsv(results));
-  writeFileAtomically(batch.out / "table.md", summaryMarkdown(summary));
-  writeFileAtomically(batch.out / "table.csv", summaryCsv(summary));
-  render::writePng(batch.out / "rmse_boxplot.png", rgba(rmseBoxPlot(results)));
-
-  std::printf("%s\nwrote %s (per_log.csv, table.md, table.csv, rmse_boxplot.png, a folder per log)\n",
-              summaryMarkdown(summary).c_str(), batch.out.string().c_str());
-  for (const LogEvaluation& e : results) {
-    if (!e.ok()) std::fprintf(stderr, "hdprior eval: log %s: %s\n", e.id.c_str(), e.error.c_str());
-  }
-  return summary.failed ? 2 : 0;
+  if (shard) return reportShard(batch, *shard, dir, results);
+  return mergeEvaluation(batch.out, logs, "eval");
 }
 
 }  // namespace hdprior::app

@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev liblz4-dev libzstd-dev
   libgtest-dev libbenchmark-dev libboost-dev
   xvfb xauth clang libclang-rt-14-dev
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()

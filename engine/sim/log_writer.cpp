@@ -17,6 +17,7 @@
 #include "engine/io/file_bytes.h"
 #include "engine/io/lidar_sweep.h"
 #include "engine/io/map_folder.h"
+#include "engine/io/partial_folder.h"
 #include "engine/io/vector_map.h"
 #include "engine/map/lane_graph.h"
 #include "engine/sim/lidar_model.h"
@@ -64,17 +65,6 @@ void makeDirs(const fs::path& dir) {
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) throw Error(dir.string(), "cannot create directory" + (ec ? ": " + ec.message() : ""));
 }
-
-// Removes the temporary folder unless the log was completed.
-struct TempDir {
-  fs::path path;
-  bool keep = false;
-  ~TempDir() {
-    if (keep || path.empty()) return;
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
 
 // The world a drive is simulated in: its map and where it comes from.
 struct World {
@@ -163,14 +153,10 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   const std::string source = o.townSeed ? world.source : world.folder->id;
   const std::string logId = logIdFor(o, source);
   makeDirs(o.outDir);
-  TempDir temp{o.outDir / ("." + logId + ".partial")};
-  {
-    std::error_code ec;
-    fs::remove_all(temp.path, ec);
-  }
-  makeDirs(temp.path / "sensors" / "lidar");
-  makeDirs(temp.path / "sensors" / "lidar_labels");
-  makeDirs(temp.path / "calibration");
+  PartialFolder temp(o.outDir / logId);
+  makeDirs(temp.path() / "sensors" / "lidar");
+  makeDirs(temp.path() / "sensors" / "lidar_labels");
+  makeDirs(temp.path() / "calibration");
 
   const LaneGraph lanes(world.map, {}, world.source);
   LidarModel lidar = argoverseLikeLidar();
@@ -198,11 +184,11 @@ SimulationResult simulateLog(const SimulationOptions& o) {
       buildScene(world.map, world.ground, lanes, path, cityTEgo.startNs(), sceneOptions, o.seed, world.source);
   const ChangedMap written = changeDrivableAreas(world.map, o.mapChange, o.seed);
 
-  writeMap(world, written.map, o.mapChange > 0.0, temp.path, logId);
-  if (o.mapChange > 0.0) writeFileAtomically(temp.path / "map_change.json", mapChangesToJson(o.mapChange, written.changes));
-  if (o.family) writeFileAtomically(temp.path / "scene_variation.json", sceneVariationToJson(variation));
-  writeEgoPoses(temp.path / "city_SE3_egovehicle.feather", cityTEgo);
-  writeSensorCalibration(temp.path / "calibration" / "egovehicle_SE3_sensor.feather", lidar.calibration());
+  writeMap(world, written.map, o.mapChange > 0.0, temp.path(), logId);
+  if (o.mapChange > 0.0) writeFileAtomically(temp.path() / "map_change.json", mapChangesToJson(o.mapChange, written.changes));
+  if (o.family) writeFileAtomically(temp.path() / "scene_variation.json", sceneVariationToJson(variation));
+  writeEgoPoses(temp.path() / "city_SE3_egovehicle.feather", cityTEgo);
+  writeSensorCalibration(temp.path() / "calibration" / "egovehicle_SE3_sensor.feather", lidar.calibration());
 
   // Sweeps in parallel; each is a function of its index only, so the output is deterministic.
   std::atomic<size_t> next{0}, done{0};
@@ -215,8 +201,8 @@ SimulationResult simulateLog(const SimulationOptions& o) {
         const SimulatedSweep s =
             simulateSweep(scene, lidar, cityTEgo, sweepNs[k], o.noise, splitmix(o.seed ^ splitmix(k + 1)));
         const std::string name = std::to_string(sweepNs[k]) + ".feather";
-        writeLidarSweep(temp.path / "sensors" / "lidar" / name, s.sweep);
-        writeLabels(temp.path / "sensors" / "lidar_labels" / name, s.labels);
+        writeLidarSweep(temp.path() / "sensors" / "lidar" / name, s.sweep);
+        writeLabels(temp.path() / "sensors" / "lidar_labels" / name, s.labels);
         ++done;
       }
     } catch (...) {
@@ -242,13 +228,7 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   if (error) std::rethrow_exception(error);
   if (o.progress) o.progress(sweeps, sweeps);
 
-  const fs::path finalDir = o.outDir / logId;
-  std::error_code ec;
-  fs::remove_all(finalDir, ec);
-  fs::rename(temp.path, finalDir, ec);
-  if (ec) throw Error(finalDir.string(), "cannot rename the finished log into place: " + ec.message());
-  temp.keep = true;
-  return {logId, finalDir, sweeps};
+  return {logId, temp.publish(), sweeps};
 }
 
 }  // namespace hdprior

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
+#include <tuple>
 #include <sstream>
 
 #include <unistd.h>
@@ -35,6 +37,40 @@ size_t column(const std::vector<std::string>& header, const std::string& name) {
 }
 
 std::string field(const std::vector<std::string>& row, size_t i) { return i < row.size() ? row[i] : ""; }
+
+// per_log.csv without its time column, for comparing runs.
+std::string perLogWithoutTimes(const fs::path& out) {
+  auto rows = perLogRows(out);
+  const size_t seconds = column(rows.at(0), "pipeline_s");
+  std::string text;
+  for (auto& row : rows) {
+    if (seconds < row.size()) row[seconds].clear();
+    for (const std::string& f : row) text += f + ",";
+    text += "\n";
+  }
+  return text;
+}
+
+// The "hdprior <command>: log <id>: ..." lines of stderr, by log id.
+std::map<std::string, std::string> logLines(const std::string& err, const std::string& command) {
+  std::map<std::string, std::string> lines;
+  const std::string prefix = "hdprior " + command + ": log ";
+  for (const std::string& line : split(err, '\n')) {
+    if (line.rfind(prefix, 0) != 0) continue;
+    const std::string rest = line.substr(prefix.size());
+    lines[rest.substr(0, rest.find(':'))] = rest;
+  }
+  return lines;
+}
+
+// Nothing temporary is left in an output folder: no ".tmp" file, no ".partial" folder.
+void expectNothingTemporary(const fs::path& out) {
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.find(".tmp"), std::string::npos) << name;
+    EXPECT_EQ(name.find(".partial"), std::string::npos) << name;
+  }
+}
 
 }  // namespace
 
@@ -181,6 +217,74 @@ TEST_F(EvalCommand, OdometryDirGivesEachLogItsTrajectoryAndReportsALogWithout) {
   EXPECT_FALSE(fs::exists(out.string() + "_x"));
 }
 
+// Logs sorted by path: broken (0), town1 (1), town2 (2); shard 0/2 has broken and town2, 1/2 town1.
+// Two shards and a merge give what one eval gives; resubmitting with --skip-existing redoes only the
+// broken log.
+TEST_F(EvalCommand, ShardsThenMergeGiveOneEvalsResultsAndSkipExistingRedoesOnlyTheFailed) {
+  const std::string base = dir_->string();
+  const fs::path whole = base + "_whole", sharded = base + "_sharded";
+  const auto plain = test::runHdprior("eval " + dir_->string() + " --out " + whole.string() + " -j 2");
+  EXPECT_EQ(plain.status, 2) << plain.err;
+
+  const auto shard0 = test::runHdprior("eval " + dir_->string() + " --out " + sharded.string() + " --shard 0/2 -j 2");
+  EXPECT_EQ(shard0.status, 2) << shard0.err;  // the broken log is in it
+  EXPECT_NE(shard0.out.find("shard 0/2: 2 logs, 1 failed"), std::string::npos) << shard0.out;
+  EXPECT_EQ(logLines(shard0.err, "eval").size(), 1u) << shard0.err;
+  EXPECT_FALSE(fs::exists(sharded / "per_log.csv"));  // a shard writes no table
+  const auto shard1 = test::runHdprior("eval " + dir_->string() + " --out " + sharded.string() + " --shard 1/2");
+  EXPECT_EQ(shard1.status, 0) << shard1.err;
+  EXPECT_NE(shard1.out.find("shard 1/2: 1 log, 0 failed"), std::string::npos) << shard1.out;
+
+  const auto merged = test::runHdprior("merge " + sharded.string() + " --logs " + dir_->string());
+  EXPECT_EQ(merged.status, 2) << merged.err;
+  const auto failed = logLines(merged.err, "merge");
+  ASSERT_EQ(failed.size(), 1u) << merged.err;
+  EXPECT_NE(failed.begin()->second.find("broken/city_SE3_egovehicle.feather"), std::string::npos) << merged.err;
+  EXPECT_EQ(perLogWithoutTimes(sharded), perLogWithoutTimes(whole));
+  EXPECT_EQ(test::readFileText(sharded / "table.csv"), test::readFileText(whole / "table.csv"));
+  EXPECT_EQ(test::readFileText(sharded / "table.md"), test::readFileText(whole / "table.md"));
+  EXPECT_TRUE(test::readFileText(sharded / "rmse_boxplot.png") == test::readFileText(whole / "rmse_boxplot.png"));
+  EXPECT_NE(merged.out.find("| with HD-map priors | 2 |"), std::string::npos) << merged.out;
+  expectNothingTemporary(sharded);
+
+  // Resubmitted: the two logs that went through are kept as they are, the broken one runs again.
+  std::map<std::string, fs::file_time_type> written;
+  const auto rows = perLogRows(sharded);
+  for (size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i][0] != "broken") written[rows[i][0]] = fs::last_write_time(sharded / rows[i][0] / "metrics.json");
+  }
+  ASSERT_EQ(written.size(), 2u);
+  const std::string before = test::readFileText(sharded / "per_log.csv");
+  for (const char* shard : {"0/2", "1/2"}) {
+    const auto again = test::runHdprior("eval " + dir_->string() + " --out " + sharded.string() + " --skip-existing --shard " + shard);
+    EXPECT_EQ(again.status, std::string(shard) == "0/2" ? 2 : 0) << again.err;
+    EXPECT_NE(again.err.find("went through before, kept (--skip-existing)"), std::string::npos) << again.err;
+    EXPECT_EQ(logLines(again.err, "eval").count("broken"), std::string(shard) == "0/2" ? 1u : 0u) << again.err;
+  }
+  for (const auto& [id, time] : written) EXPECT_EQ(fs::last_write_time(sharded / id / "metrics.json"), time) << id;
+  EXPECT_EQ(test::runHdprior("merge " + sharded.string() + " --logs " + dir_->string()).status, 2);
+  EXPECT_EQ(test::readFileText(sharded / "per_log.csv"), before);  // the kept logs' times too
+}
+
+// A merge before every shard is done: each log without a result is named and counted as failed.
+TEST_F(EvalCommand, MergeNamesEveryMissingLog) {
+  const fs::path out = dir_->parent_path() / (dir_->filename().string() + "_partly");
+  const auto shard1 = test::runHdprior("eval " + dir_->string() + " --out " + out.string() + " --shard 1/2");
+  ASSERT_EQ(shard1.status, 0) << shard1.err;
+  const auto merged = test::runHdprior("merge " + out.string() + " --logs " + dir_->string());
+  EXPECT_EQ(merged.status, 2) << merged.err;
+  const auto lines = logLines(merged.err, "merge");
+  ASSERT_EQ(lines.size(), 2u) << merged.err;  // broken and town 2: shard 0 never ran
+  for (const auto& [id, line] : lines) {
+    EXPECT_NE(line.find(": missing: no " + (out / (id + ".result.json")).string()), std::string::npos) << line;
+  }
+  EXPECT_TRUE(lines.count("broken"));
+  const auto table = split(test::readFileText(out / "table.csv"), '\n');
+  ASSERT_EQ(table.size(), 3u);
+  EXPECT_EQ(split(table[1], ',')[1], "1");  // one log averaged
+  EXPECT_EQ(split(table[1], ',')[2], "2");  // two counted as failed
+}
+
 // Only broken logs: every table is written, with no average in it, and the status is 2.
 TEST(EvalCommandAllFailed, TablesSayNoLogWentThrough) {
   const fs::path dir = test::freshOutputDir("eval_all_failed");
@@ -211,6 +315,10 @@ TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
       {"eval " + empty.string() + " --out " + out.string() + " -j x", "option --jobs: 'x' is not an integer"},
       {"eval " + empty.string() + " --out " + out.string() + " -j 0", "option --jobs: must be at least 1"},
       {"eval " + empty.string() + " -j 2", "option --out: is required"},
+      {"eval " + empty.string() + " --out " + out.string() + " --shard 2/2", "option --shard: '2/2': I must be below N"},
+      {"eval " + empty.string() + " --out " + out.string() + " --shard 0/0", "option --shard: '0/0': N must be at least 1"},
+      {"eval " + empty.string() + " --out " + out.string() + " --shard 1", "option --shard: '1' is not I/N"},
+      {"eval " + empty.string() + " --out " + out.string() + " --shard -1/2", "option --shard: '-1/2' is not I/N"},
   };
   for (const auto& [args, message] : cases) {
     const auto r = test::runHdprior(args);
@@ -220,6 +328,40 @@ TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
     EXPECT_NE(r.err.find(message), std::string::npos) << args << " -> " << r.err;
   }
   EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace hdprior
+
+namespace hdprior {
+
+// merge's bad input: one line naming the folder, file or option, status 2, no table written.
+TEST(MergeCommand, BadInputIsOneLineExit2AndWritesNothing) {
+  const fs::path dir = test::freshOutputDir("merge_bad_input");
+  fs::create_directories(dir / "logs" / "broken1" / "sensors" / "lidar");
+  std::ofstream(dir / "logs" / "broken1" / "city_SE3_egovehicle.feather", std::ios::binary) << "ARROW1";
+  const fs::path out = dir / "out", logs = dir / "logs", result = out / "broken1.result.json";
+  fs::create_directories(out);
+  const std::string merge = "merge " + out.string() + " --logs " + logs.string();
+  // Arguments, the result file's text (none: no file), the message.
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"merge " + (dir / "nothing").string() + " --logs " + logs.string(), "", (dir / "nothing").string() + ": folder not found"},
+      {"merge " + out.string(), "", "option --logs: is required"},
+      {"merge " + out.string() + " --logs " + (dir / "nologs").string(), "", "nologs: folder not found"},
+      {merge, "{\"log\": \"broken1\"", result.string() + ": invalid JSON"},
+      {merge, "{\"log\": \"broken1\", \"path\": \"/x\"}", result.string() + ": the result has no 'error'"},
+      {merge, "{\"log\": \"other\", \"path\": \"/x\", \"error\": \"x\"}",
+       result.string() + ": holds the result of log 'other', not of 'broken1'"},
+  };
+  for (const auto& [args, text, message] : cases) {
+    fs::remove(result);
+    if (!text.empty()) std::ofstream(result) << text;
+    const auto r = test::runHdprior(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("hdprior merge: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << " -> " << r.err;
+  }
+  for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path(), result);  // nothing written
 }
 
 }  // namespace hdprior
