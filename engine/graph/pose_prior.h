@@ -30,6 +30,9 @@ struct PosePriorOptions {
   // false: the prior constrains only the lateral position and yaw (and z), never the position along
   // the vehicle's heading, where NDT matches against a road's drivable area are weakest.
   bool alongTrack = true;
+  // A match goes into the graph only if its innovation against the prediction is below this quantile
+  // of chi-square (engine/pipeline/innovation_gate.h); 0: every match that is not rejected goes in.
+  double innovationGateProbability = 0.99;
 };
 
 // The prior's information over the planar pose (x, y, yaw), the order of a match's.

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "engine/error.h"
 #include "engine/geom/se2.h"
@@ -56,6 +57,20 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
   return out;
 }
 
+void PriorStage::gatePrior(KeyframeMatch& m) {
+  const InnovationGate::Test t = gate_.test(planarPose(m.predicted), planarPose(m.prior.pose), planarInformation(m.prior));
+  m.innovationChi2 = t.chi2;
+  const double p = config_.prior.innovationGateProbability;
+  if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
+    m.hasPrior = false;
+    m.match.status = MatchStatus::Rejected;
+    m.match.reason = "inconsistent with the odometry's prediction (innovation chi2 " + std::to_string(t.chi2) + ", " +
+                     std::to_string(t.dof) + " directions)";
+    return;
+  }
+  gate_.update(planarInformation(m.prior));
+}
+
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   const Keyframe& kf = odometry.keyframes().back();
   KeyframeMatch m;
@@ -64,6 +79,8 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   m.timestampNs = kf.timestampNs;
   const SE3 odometryPose = cityTOdom_ * kf.odomTEgo;
   m.predicted = predictedPose(kf);
+  const Matrix6d odometryInfo = odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph);
+  if (graph_->size() > 0) gate_.predict(planarPose(graph_->pose(graph_->size() - 1)), kf.previousTThis, odometryInfo);
 
   auto start = std::chrono::steady_clock::now();
   const KeyframeSweeps sweeps = keyframeSweeps(odometry, odometry.keyframes().size() - 1, cityTOdom_, config_.submapRoadPoints, sweepOf);
@@ -73,13 +90,16 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   start = std::chrono::steady_clock::now();
   m.match = matcher_->match(points.road, planarPose(m.predicted), points.curb);
   m.hasPrior = m.match.status != MatchStatus::Rejected;
-  if (m.hasPrior) m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);
+  if (m.hasPrior) {
+    m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);
+    gatePrior(m);
+  }
   times_.matchS += secondsSince(start);
 
   start = std::chrono::steady_clock::now();
   const size_t k = graph_->addKeyframe(kf.timestampNs, odometryPose, m.predicted);
   if (k > 0) {
-    graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph));
+    graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInfo);
   }
   if (m.hasPrior) graph_->addPrior(k, m.prior);
   graph_->solve(true);

@@ -13,6 +13,7 @@
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/match/match_result.h"
 #include "engine/pipeline/config.h"
+#include "engine/pipeline/innovation_gate.h"
 
 namespace hdprior {
 
@@ -29,6 +30,7 @@ struct KeyframeMatch {
   MatchResult match;
   bool hasPrior = false;            // accepted or degenerate: a prior went into the graph
   PosePrior prior;
+  double innovationChi2 = 0.0;      // the prior against the prediction (InnovationGate); 0 without a prior
 };
 
 // Loads the sweep of an odometry frame.
@@ -77,6 +79,7 @@ class PriorStage {
 
  private:
   SE3 predictedPose(const Keyframe& keyframe) const;
+  void gatePrior(KeyframeMatch& m);
 
   const HdMap& map_;
   Config config_;
@@ -84,6 +87,7 @@ class PriorStage {
   bool givenPoses_;
   std::unique_ptr<MapMatcher> matcher_;
   std::unique_ptr<PoseGraph> graph_;
+  InnovationGate gate_;
   std::vector<KeyframeMatch> matches_;
   PriorStageTimes times_;
 };
