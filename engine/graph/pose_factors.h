@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -52,7 +53,8 @@ struct ScaleStep {
   }
 };
 
-// HD-map prior factor on (yaw, x, y, z): r = sqrt(Omega) [wrap(yaw(q) - yaw*), t - t*].
+// HD-map prior factor on (yaw, x, y, z): r = sqrt(Omega) [wrap(yaw(q) - yaw*), t - b - t*], with b
+// the map's own (x, y) error where the prior is (a state of the graph; zero held constant without).
 struct PriorFactor {
   double yaw;
   Eigen::Vector3d translation;
@@ -63,7 +65,7 @@ struct PriorFactor {
         sqrtInformation(sqrtInfo) {}
 
   template <typename T>
-  bool operator()(const T* q, const T* t, T* residual) const {
+  bool operator()(const T* q, const T* t, const T* mapOffset, T* residual) const {
     using std::atan2;
     using std::cos;
     using std::sin;
@@ -74,8 +76,26 @@ struct PriorFactor {
     Eigen::Matrix<T, 4, 1> r;
     r(0) = atan2(sin(d), cos(d));
     for (int k = 0; k < 3; ++k) r(k + 1) = t[k] - T(translation(k));
+    r(1) -= mapOffset[0];
+    r(2) -= mapOffset[1];
     Eigen::Map<Eigen::Matrix<T, 4, 1>> out(residual);
     out = sqrtInformation.cast<T>() * r;
+    return true;
+  }
+};
+
+// The map's error at one prior given the one at the previous prior, `metres` of route before it: a
+// Gauss-Markov field of standard deviation sigma and correlation length L along the route,
+// b_j = a b_i + w, a = exp(-metres / L), var(w) = sigma^2 (1 - a^2). The first prior's b_i is zero.
+struct MapOffsetStep {
+  double a, sigma;
+
+  MapOffsetStep(double metres, double length, double fieldSigma, bool first)
+      : a(first ? 0.0 : std::exp(-metres / length)), sigma(fieldSigma * std::sqrt(std::max(1.0 - a * a, 1e-6))) {}
+
+  template <typename T>
+  bool operator()(const T* bi, const T* bj, T* residual) const {
+    for (int k = 0; k < 2; ++k) residual[k] = (bj[k] - T(a) * bi[k]) / T(sigma);
     return true;
   }
 };

@@ -17,15 +17,36 @@ struct PoseGraph::Impl {
   std::vector<std::unique_ptr<Eigen::Vector3d>> t;
   std::vector<std::unique_ptr<double>> scale;  // the odometry's scale error; one for all (shared) or one per keyframe
   std::vector<bool> hasPrior;
+  std::vector<double> routeMetres;  // along the odometry, from the first keyframe
+  std::vector<std::unique_ptr<Eigen::Vector2d>> mapOffset;  // the map's error at each prior (mapErrorLength > 0)
+  std::vector<double> mapOffsetMetres;
+  Eigen::Vector2d zeroOffset = Eigen::Vector2d::Zero();  // held constant: priors without a map offset state
   double zeroScale = 0.0;  // the scale prior's anchor
   bool firstFixed = false;
 };
 
 PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
   if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0 ||
-      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0)) {
-    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow or the scale sigmas out of range");
+      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0) || !(options_.mapErrorLength >= 0)) {
+    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow, the scale sigmas or mapErrorLength out of range");
   }
+  impl_->problem.AddParameterBlock(impl_->zeroOffset.data(), 2);
+  impl_->problem.SetParameterBlockConstant(impl_->zeroOffset.data());
+}
+
+double* PoseGraph::addMapOffsetState(size_t i, double sigma) {
+  Impl& m = *impl_;
+  const bool first = m.mapOffset.empty();
+  const double metres = first ? 0.0 : m.routeMetres[i] - m.mapOffsetMetres.back();
+  const MapOffsetStep step(metres, options_.mapErrorLength, sigma, first);
+  double* previous = first ? m.zeroOffset.data() : m.mapOffset.back()->data();
+  m.mapOffset.push_back(std::make_unique<Eigen::Vector2d>(step.a * Eigen::Map<Eigen::Vector2d>(previous)));
+  m.mapOffsetMetres.push_back(m.routeMetres[i]);
+  double* offset = m.mapOffset.back()->data();
+  m.problem.AddParameterBlock(offset, 2);
+  m.problem.AddResidualBlock(new ceres::AutoDiffCostFunction<MapOffsetStep, 2, 2, 2>(new MapOffsetStep(step)), nullptr,
+                             previous, offset);
+  return offset;
 }
 
 bool PoseGraph::scaleIsState() const { return options_.odometryScaleSigma > 0.0; }
@@ -60,6 +81,7 @@ size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3
   impl_->q.push_back(std::make_unique<Eigen::Quaterniond>(Eigen::Quaterniond(start.rotation()).normalized()));
   impl_->t.push_back(std::make_unique<Eigen::Vector3d>(start.translation()));
   impl_->hasPrior.push_back(false);
+  impl_->routeMetres.push_back(impl_->routeMetres.empty() ? 0.0 : impl_->routeMetres.back());
   impl_->problem.AddParameterBlock(impl_->q.back()->coeffs().data(), 4, new ceres::EigenQuaternionManifold);
   impl_->problem.AddParameterBlock(impl_->t.back()->data(), 3);
   addScaleState();
@@ -68,6 +90,7 @@ size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3
 
 void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information) {
   if (i >= size() || j >= size() || i == j) throw Error("pose graph", "odometry between unknown keyframes");
+  if (j == i + 1) impl_->routeMetres[j] = impl_->routeMetres[i] + iTj.translation().norm();
   auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1>(
       new BetweenFactor(iTj, sqrtInformation<6>(information)));
   impl_->problem.AddResidualBlock(cost, nullptr, impl_->q[i]->coeffs().data(), impl_->t[i]->data(),
@@ -81,10 +104,12 @@ void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& 
 
 void PoseGraph::addPrior(size_t i, const PosePrior& prior) {
   if (i >= size()) throw Error("pose graph", "prior on an unknown keyframe");
-  auto* cost = new ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3>(
-      new PriorFactor(prior.pose, sqrtInformation<4>(prior.information)));
+  const bool correlated = options_.mapErrorLength > 0.0 && prior.mapSigma > 0.0;
+  const PosePrior p = correlated ? prior : withIndependentMapError(prior);
+  double* offset = correlated ? addMapOffsetState(i, prior.mapSigma) : impl_->zeroOffset.data();
+  auto* cost = new ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3, 2>(new PriorFactor(p.pose, sqrtInformation<4>(p.information)));
   impl_->problem.AddResidualBlock(cost, new ceres::HuberLoss(options_.priorHuber), impl_->q[i]->coeffs().data(),
-                                  impl_->t[i]->data());
+                                  impl_->t[i]->data(), offset);
   impl_->hasPrior[i] = true;
 }
 

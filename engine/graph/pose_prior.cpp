@@ -39,7 +39,7 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   // Match information is over (x, y, yaw); reorder to (yaw, x, y) and add z.
   const int order[3] = {1, 2, 0};  // match index -> prior index
   const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
-  Eigen::Matrix3d information = withVarianceAlong(flooredInformation(match.information, options), along, options.alongTrackSigma);
+  Eigen::Matrix3d information = withVarianceAlong(flooredInformation(match.informationGivenMap, options), along, options.alongTrackSigma);
   if (!options.alongTrack) {
     const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - along * along.transpose();
     information = P * information * P;
@@ -48,16 +48,35 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
     for (int c = 0; c < 3; ++c) prior.information(order[r], order[c]) = information(r, c);
   }
   prior.information(3, 3) = std::isfinite(z) ? 1.0 / (options.altitudeSigma * options.altitudeSigma) : 0.0;
+  prior.mapSigma = match.mapSigma;
   return prior;
 }
 
+namespace {
+constexpr int kPlanarOrder[3] = {1, 2, 0};  // (x, y, yaw) -> (yaw, x, y, z)
+}
+
 Eigen::Matrix3d planarInformation(const PosePrior& prior) {
-  const int order[3] = {1, 2, 0};  // (x, y, yaw) -> (yaw, x, y, z)
   Eigen::Matrix3d information;
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) information(r, c) = prior.information(order[r], order[c]);
+    for (int c = 0; c < 3; ++c) information(r, c) = prior.information(kPlanarOrder[r], kPlanarOrder[c]);
   }
   return information;
+}
+
+Eigen::Matrix3d marginalPlanarInformation(const PosePrior& prior) {
+  const Eigen::Matrix3d exact = planarInformation(prior);
+  return withVarianceAlong(withVarianceAlong(exact, Eigen::Vector3d::UnitX(), prior.mapSigma), Eigen::Vector3d::UnitY(), prior.mapSigma);
+}
+
+PosePrior withIndependentMapError(const PosePrior& prior) {
+  PosePrior out = prior;
+  const Eigen::Matrix3d marginal = marginalPlanarInformation(prior);
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out.information(kPlanarOrder[r], kPlanarOrder[c]) = marginal(r, c);
+  }
+  out.mapSigma = 0.0;
+  return out;
 }
 
 PriorResidual priorResidual(const PosePrior& prior, const SE3& pose) {

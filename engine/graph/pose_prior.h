@@ -14,7 +14,10 @@ struct MatchResult;
 // odometry; information over (yaw, x, y, z) only.
 struct PosePrior {
   SE3 pose = SE3::Identity();
-  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();  // order: yaw, x, y, z
+  Eigen::Matrix4d information = Eigen::Matrix4d::Zero();  // order: yaw, x, y, z; the map taken as exact
+  // The map's own x, y error, isotropic, not in `information`: the pose graph carries it, correlated
+  // along the route or independent per prior (PoseGraphOptions::mapErrorLength).
+  double mapSigma = 0.0;
 };
 
 struct PosePriorOptions {
@@ -37,6 +40,12 @@ struct PosePriorOptions {
 
 // The prior's information over the planar pose (x, y, yaw), the order of a match's.
 Eigen::Matrix3d planarInformation(const PosePrior& prior);
+
+// The same with the map's error added back: what the prior alone says about the pose.
+Eigen::Matrix3d marginalPlanarInformation(const PosePrior& prior);
+
+// The prior with its map error in its information, as an error of its own, independent of the others'.
+PosePrior withIndependentMapError(const PosePrior& prior);
 
 // The altitude z* of the ego origin at (x, y): ground height (bilinear) plus egoHeight; NaN
 // outside the raster's region of interest.

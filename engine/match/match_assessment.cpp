@@ -131,6 +131,8 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
   }
   r.information = d.asDiagonal() * keptInfo * d.asDiagonal();
   r.covariance = d.cwiseInverse().asDiagonal() * keptCov * d.cwiseInverse().asDiagonal();
+  r.informationGivenMap = r.information;
+  r.mapSigma = 0.0;
   r.gateChi2 = predictionChi2(r.initial, r.estimate, o.predictionSigma);
 
   r.status = r.observableDirections == 3 ? MatchStatus::Accepted : MatchStatus::Degenerate;

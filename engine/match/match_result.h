@@ -23,6 +23,10 @@ struct MatchResult {
   // Information kept for the prior (zero in unobservable directions) and its pseudo-inverse.
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  // The same information were the map exact: the map's own x, y error (mapSigma, isotropic) left out,
+  // so that the pose graph can carry it as an error correlated along the route (pose_graph.h).
+  Eigen::Matrix3d informationGivenMap = Eigen::Matrix3d::Zero();
+  double mapSigma = 0.0;
   // Eigen-decomposition of the drivable boundary's constraint on the pose in scaled units
   // (x, y, yaw * yawLength), ascending: which directions the map's edges observe.
   Eigen::Vector3d eigenvalues = Eigen::Vector3d::Zero();

@@ -157,7 +157,8 @@ void widenToEvidence(const Eigen::Vector3d& halfWidths, const MatchOptions& o, M
   // exceeds its cap, or that leans on an axis the evidence leaves unbounded, is dropped.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (laplaceInformation + laplaceInformation.transpose()));
   const double largest = eig.eigenvalues().maxCoeff();
-  Eigen::Matrix3d information = Eigen::Matrix3d::Zero(), covariance = Eigen::Matrix3d::Zero();
+  const Eigen::Vector3d mapSigmaYaw(0.0, 0.0, mapSigma.z());
+  Eigen::Matrix3d information = Eigen::Matrix3d::Zero(), covariance = Eigen::Matrix3d::Zero(), givenMap = Eigen::Matrix3d::Zero();
   r.observableDirections = 0;
   for (int i = 0; i < 3; ++i) {
     const double lambda = eig.eigenvalues()(i);
@@ -170,15 +171,19 @@ void widenToEvidence(const Eigen::Vector3d& halfWidths, const MatchOptions& o, M
     double evidence = 0.0;
     for (int a = 0; a < 3; ++a)
       if (std::isfinite(evidenceSigma(a))) evidence += weight(a) * evidenceSigma(a) * evidenceSigma(a);
-    const double variance = std::max(1.0 / lambda, evidence) + weight.dot(mapSigma.cwiseAbs2());
+    const double matchVariance = std::max(1.0 / lambda, evidence) + weight.dot(mapSigmaYaw.cwiseAbs2());
+    const double variance = matchVariance + weight.dot(mapSigma.cwiseAbs2() - mapSigmaYaw.cwiseAbs2());
     if (variance > weight.dot(cap.cwiseAbs2())) continue;
     information += u * u.transpose() / variance;
+    givenMap += u * u.transpose() / matchVariance;
     covariance += u * u.transpose() * variance;
     ++r.observableDirections;
   }
   r.evidenceHalfWidths = halfWidths;
   r.laplaceSigmas = axisVariances(laplaceInformation).cwiseSqrt().cwiseQuotient(scale);
   r.information = fromCity.transpose() * information * fromCity;
+  r.informationGivenMap = fromCity.transpose() * givenMap * fromCity;
+  r.mapSigma = o.mapSigma;
   r.covariance = toCity * covariance * toCity.transpose();
   if (r.status == MatchStatus::Rejected) return;
   if (r.observableDirections == 0) {

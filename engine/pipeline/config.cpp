@@ -188,7 +188,8 @@ Sections sectionsOf(Config& c) {
         {"odometry_scale_sigma_per_sqrt_m", &c.graph.odometryScaleSigmaPerSqrtM, 0, 0.5},
         {"given_odometry_translation_sigma_per_m", &c.graph.givenOdometryTranslationSigmaPerM, 0, 10},
         {"given_odometry_rotation_sigma_deg_per_m", &c.graph.givenOdometryRotationSigmaDegPerM, 0, 180},
-        {"odometry_covariance", &c.graph.odometryCovariance}}},
+        {"odometry_covariance", &c.graph.odometryCovariance},
+        {"map_error_length", &c.graph.mapErrorLength, 0, 1e6}}},
       {"sweeps", {{"max_unreadable_share", &c.maxUnreadableSweepShare, 0, 1}}},
   };
 }

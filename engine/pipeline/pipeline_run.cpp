@@ -38,7 +38,7 @@ RunMetrics evaluateRun(const PipelineRun& run) {
                                                    : m.matches.rejected);
     if (k.hasPrior && run.groundTruth.covers(k.timestampNs)) {
       m.priorErrors.push_back(matchErrorSample(planarPose(run.groundTruth.at(k.timestampNs)), planarPose(k.prior.pose),
-                                               planarInformation(k.prior)));
+                                               marginalPlanarInformation(k.prior)));
     }
   }
   m.priorCalibration = calibrateMatches(m.priorErrors);

@@ -58,7 +58,7 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
 }
 
 void PriorStage::gatePrior(KeyframeMatch& m) {
-  const InnovationGate::Test t = gate_.test(planarPose(m.predicted), planarPose(m.prior.pose), planarInformation(m.prior));
+  const InnovationGate::Test t = gate_.test(planarPose(m.predicted), planarPose(m.prior.pose), marginalPlanarInformation(m.prior));
   m.innovationChi2 = t.chi2;
   const double p = config_.prior.innovationGateProbability;
   if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
@@ -68,7 +68,7 @@ void PriorStage::gatePrior(KeyframeMatch& m) {
                      std::to_string(t.dof) + " directions)";
     return;
   }
-  gate_.update(planarInformation(m.prior));
+  gate_.update(marginalPlanarInformation(m.prior));
 }
 
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {

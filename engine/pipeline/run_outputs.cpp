@@ -100,7 +100,7 @@ json keyframesJson(const PipelineRun& run) {
     if (k < run.matches.size() && run.matches[k].hasPrior && run.groundTruth.covers(kf.timestampNs)) {
       const KeyframeMatch& m = run.matches[k];
       j["prior_error"] = priorErrorJson(matchErrorSample(planarPose(run.groundTruth.at(kf.timestampNs)),
-                                                         planarPose(m.prior.pose), planarInformation(m.prior)));
+                                                         planarPose(m.prior.pose), marginalPlanarInformation(m.prior)));
     }
     keyframes.push_back(j);
   }

@@ -68,11 +68,12 @@ TEST(PoseFactors, PriorJacobiansMatchCentralDifferences) {
   Eigen::Matrix4d info;
   info << 400, 10, -5, 0, 10, 25, 3, 0, -5, 3, 30, 0, 0, 0, 0, 100;
   const PriorFactor f(prior, sqrtInformation<4>(info));
-  ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3> autodiff(new PriorFactor(f));
-  ceres::NumericDiffCostFunction<PriorFactor, ceres::CENTRAL, 4, 4, 3> numeric(new PriorFactor(f));
+  ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3, 2> autodiff(new PriorFactor(f));
+  ceres::NumericDiffCostFunction<PriorFactor, ceres::CENTRAL, 4, 4, 3, 2> numeric(new PriorFactor(f));
   Eigen::Quaterniond q(poseOf(0, 0, 0, 0.9, 0.05, 0.03).rotation());
   Eigen::Vector3d t(10.5, -3.7, 2.2);
-  expectJacobiansMatch(autodiff, numeric, {q.coeffs().data(), t.data()}, 1e-6);
+  Eigen::Vector2d mapOffset(0.15, -0.1);
+  expectJacobiansMatch(autodiff, numeric, {q.coeffs().data(), t.data(), mapOffset.data()}, 1e-6);
 }
 
 TEST(PoseFactors, BetweenJacobiansMatchCentralDifferences) {
@@ -109,7 +110,8 @@ TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
   Eigen::Quaterniond q(poseOf(0, 0, 0, -179 * kDeg).rotation());
   Eigen::Vector3d t(0, 0, 0);
   double r4[4];
-  prior(q.coeffs().data(), t.data(), r4);
+  const Eigen::Vector2d noMapError = Eigen::Vector2d::Zero();
+  prior(q.coeffs().data(), t.data(), noMapError.data(), r4);
   EXPECT_NEAR(r4[0], 2 * kDeg, 1e-12);  // not -358 degrees
 }
 
@@ -128,7 +130,8 @@ TEST(PosePrior, ResidualIsWhatItsFactorWhitensAndItsChi2) {
   Eigen::Quaterniond q(at.rotation());
   Eigen::Vector3d t = at.translation();
   Eigen::Vector4d whitened;
-  factor(q.coeffs().data(), t.data(), whitened.data());
+  const Eigen::Vector2d noMapError = Eigen::Vector2d::Zero();
+  factor(q.coeffs().data(), t.data(), noMapError.data(), whitened.data());
   EXPECT_NEAR(r.chi2, whitened.squaredNorm(), 1e-9);
   EXPECT_NEAR(r.chi2, 100 * std::pow(3 * kDeg, 2) + 4 * 0.25 + 9 * 0.09 + 25 * 0.04, 1e-9);
 }
@@ -139,7 +142,7 @@ TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
   const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[0]);
   MatchResult match;
   match.estimate = planarPose(truth);
-  match.information = Eigen::Vector3d(100, 200, 3000).asDiagonal();
+  match.information = match.informationGivenMap = Eigen::Vector3d(100, 200, 3000).asDiagonal();
   const SE3 odometry = truth * poseOf(0.5, -0.3, 0.4, 0.02);  // wrong by a little, incl. z
   const PosePrior prior = makePosePrior(match, odometry, ground, {.alongTrackSigma = 0.0});
   EXPECT_NEAR(prior.pose.translation().z(), truth.translation().z(), 0.10);  // ego 0.32 m above the raster
@@ -172,6 +175,7 @@ TEST(PosePrior, TheAlongTrackSigmaWidensOnlyTheDirectionOfTheHeading) {
   match.estimate = Eigen::Vector3d(0, 0, yaw);
   match.information = 100.0 * along * along.transpose() + 400.0 * across * across.transpose();
   match.information(2, 2) = 3000.0;
+  match.informationGivenMap = match.information;
   const GroundHeight none;
   const PosePrior prior = makePosePrior(match, poseOf(0, 0, 0, yaw), none, {.alongTrackSigma = 1.5});
   const Eigen::Vector3d alongYawXY(0, along.x(), along.y()), acrossYawXY(0, across.x(), across.y());
@@ -192,6 +196,7 @@ TEST(PosePrior, ADegenerateMatchTakesItsAlongTrackPlaceAndAltitudeFromTheOdometr
   match.information.setZero();
   match.information.topLeftCorner<2, 2>() = 400.0 * across * across.transpose();
   match.information(2, 2) = 3000.0;
+  match.informationGivenMap = match.information;
   const PosePrior prior = makePosePrior(match, truth, ground);
   const Eigen::Vector2d expected = t.head<2>() + 0.2 * across;
   EXPECT_NEAR((prior.pose.translation().head<2>() - expected).norm(), 0.0, 1e-9);
@@ -363,6 +368,83 @@ TEST(PoseGraph, RejectsBadInput) {
   EXPECT_THROW(graph.addPrior(3, PosePrior{}), Error);
   EXPECT_THROW(PoseGraph({.priorHuber = 0.0}), Error);
   EXPECT_THROW(PoseGraph({.odometryScaleSigma = -0.01}), Error);
+}
+
+}  // namespace
+}  // namespace hdprior
+
+namespace hdprior {
+namespace {
+
+// A straight 100 m drive along x with exact odometry (0.5 % and 0.05 deg sigmas per 2 m step) and a
+// lateral prior every keyframe, all `lateralBias` off (one street's drivable area, shifted) with
+// `sigmaGivenMap` and a map error of `mapSigma`; returns the mean lateral shift the graph makes.
+double meanLateralShift(double mapErrorLength, double lateralBias, double sigmaGivenMap, double mapSigma) {
+  PoseGraphOptions o;
+  o.mapErrorLength = mapErrorLength;
+  PoseGraph graph(o);
+  const SE3 step = poseOf(2.0, 0, 0, 0);
+  Matrix6d info = Matrix6d::Zero();
+  info.diagonal() << 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2),
+      1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2);
+  const int n = 51;
+  for (int k = 0; k < n; ++k) {
+    const SE3 truth = poseOf(2.0 * k, 0, 0, 0);
+    graph.addKeyframe(int64_t(k) * 100'000'000, truth);
+    if (k > 0) graph.addOdometry(size_t(k) - 1, size_t(k), step, info);
+    PosePrior p;
+    p.pose = poseOf(2.0 * k, lateralBias, 0, 0);
+    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 0.0, 1.0 / std::pow(sigmaGivenMap, 2), 0.0).asDiagonal();
+    p.mapSigma = mapSigma;
+    graph.addPrior(size_t(k), p);
+  }
+  graph.solve();
+  double sum = 0.0;
+  for (int k = 0; k < n; ++k) sum += graph.pose(size_t(k)).translation().y();
+  return sum / n;
+}
+
+TEST(PoseGraph, PriorsSharingOneMapErrorDoNotAddUpToCertainty) {
+  // Fifty priors 0.2 m off, each 0.05 m given the map, the map 0.2 m: taken as independent they pull
+  // the drive most of the way; as one field over 50 m they are a few observations of one offset,
+  // and the odometry from the fixed start keeps the drive where it is.
+  const double independent = meanLateralShift(0.0, 0.2, 0.05, 0.2);
+  const double correlated = meanLateralShift(50.0, 0.2, 0.05, 0.2);
+  std::printf("mean lateral shift: independent %.3f m, correlated %.3f m\n", independent, correlated);
+  EXPECT_GT(independent, 0.08);
+  EXPECT_LT(correlated, 0.5 * independent);
+  // Without a map error the two are the same graph.
+  EXPECT_NEAR(meanLateralShift(0.0, 0.2, 0.05, 0.0), meanLateralShift(50.0, 0.2, 0.05, 0.0), 1e-6);
+}
+
+TEST(PoseGraph, ACorrelatedMapErrorStillLetsThePriorsCorrectADrift) {
+  // The odometry drifts 1 deg in yaw over the drive (1.7 m across at its end); the priors are right.
+  for (double length : {0.0, 50.0}) {
+    PoseGraphOptions o;
+    o.mapErrorLength = length;
+    PoseGraph graph(o);
+    Matrix6d info = Matrix6d::Zero();
+    info.diagonal() << 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2),
+        1 / std::pow(0.02, 2), 1 / std::pow(0.02, 2), 1 / std::pow(0.02, 2);
+    const SE3 drifting = poseOf(2.0, 0, 0, 0.02 * kDeg);
+    SE3 odometry = SE3::Identity();
+    for (int k = 0; k < 51; ++k) {
+      if (k > 0) odometry = odometry * drifting;
+      graph.addKeyframe(int64_t(k) * 100'000'000, odometry);
+      if (k > 0) graph.addOdometry(size_t(k) - 1, size_t(k), drifting, info);
+      PosePrior p;
+      p.pose = poseOf(2.0 * k, 0, 0, 0);
+      p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 0.0, 1.0 / std::pow(0.05, 2), 0.0).asDiagonal();
+      p.mapSigma = 0.2;
+      graph.addPrior(size_t(k), p);
+    }
+    const double before = std::abs(odometry.translation().y());
+    graph.solve();
+    const double after = std::abs(graph.pose(50).translation().y());
+    std::printf("map error length %.0f m: end %.3f m across -> %.3f m\n", length, before, after);
+    EXPECT_GT(before, 0.4);
+    EXPECT_LT(after, 0.25 * before) << length;
+  }
 }
 
 }  // namespace
