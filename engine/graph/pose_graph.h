@@ -55,6 +55,9 @@ struct PoseGraphOptions {
   // drivable area is 0.2 m off do not add up to a 0.03 m certainty. 0: each prior's map error is its
   // own, independent of the others' (the default: README, Unseen data, says why).
   double mapErrorLength = 0.0;
+  // The final solve takes the per-metre sigmas above times the factor (0.1-100) under which the run's
+  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured.
+  bool estimateDriftModel = true;
 };
 
 struct SolveSummary {

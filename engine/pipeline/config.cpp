@@ -189,7 +189,8 @@ Sections sectionsOf(Config& c) {
         {"given_odometry_translation_sigma_per_m", &c.graph.givenOdometryTranslationSigmaPerM, 0, 10},
         {"given_odometry_rotation_sigma_deg_per_m", &c.graph.givenOdometryRotationSigmaDegPerM, 0, 180},
         {"odometry_covariance", &c.graph.odometryCovariance},
-        {"map_error_length", &c.graph.mapErrorLength, 0, 1e6}}},
+        {"map_error_length", &c.graph.mapErrorLength, 0, 1e6},
+        {"estimate_drift_model", &c.graph.estimateDriftModel}}},
       {"sweeps", {{"max_unreadable_share", &c.maxUnreadableSweepShare, 0, 1}}},
   };
 }

@@ -58,7 +58,9 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
 }
 
 void PriorStage::gatePrior(KeyframeMatch& m) {
-  const InnovationGate::Test t = gate_.test(planarPose(m.predicted), planarPose(m.prior.pose), marginalPlanarInformation(m.prior));
+  const Eigen::Vector3d prior = planarPose(m.prior.pose);
+  const Eigen::Matrix3d information = marginalPlanarInformation(m.prior);
+  const PlanarKalman::Innovation t = gate_.innovation(prior, information);
   m.innovationChi2 = t.chi2;
   const double p = config_.prior.innovationGateProbability;
   if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
@@ -68,7 +70,8 @@ void PriorStage::gatePrior(KeyframeMatch& m) {
                      std::to_string(t.dof) + " directions)";
     return;
   }
-  gate_.update(marginalPlanarInformation(m.prior));
+  gate_.update(t);
+  if (driftModels_) driftModels_->observe(prior, information);
 }
 
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
@@ -80,7 +83,14 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   const SE3 odometryPose = cityTOdom_ * kf.odomTEgo;
   m.predicted = predictedPose(kf);
   const Matrix6d odometryInfo = odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph);
-  if (graph_->size() > 0) gate_.predict(planarPose(graph_->pose(graph_->size() - 1)), kf.previousTThis, odometryInfo);
+  if (graph_->size() == 0) {
+    gate_ = PlanarKalman(planarPose(m.predicted));
+    if (config_.graph.estimateDriftModel) driftModels_.emplace(config_.graph, planarPose(m.predicted));
+  } else {
+    gate_.setMean(planarPose(graph_->pose(graph_->size() - 1)));
+    gate_.predict(kf.previousTThis, odometryInfo);
+    if (driftModels_) driftModels_->step(kf);
+  }
 
   auto start = std::chrono::steady_clock::now();
   const KeyframeSweeps sweeps = keyframeSweeps(odometry, odometry.keyframes().size() - 1, cityTOdom_, config_.submapRoadPoints, sweepOf);
@@ -107,8 +117,17 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   matches_.push_back(std::move(m));
 }
 
-SolveSummary PriorStage::finish() {
+SolveSummary PriorStage::finish(const Odometry& odometry) {
   const auto start = std::chrono::steady_clock::now();
+  if (driftModels_ && config_.graph.estimateDriftModel) {
+    const PoseGraphOptions likeliest = driftModels_->likeliest();
+    if (likeliest.odometryTranslationSigmaPerM != config_.graph.odometryTranslationSigmaPerM ||
+        likeliest.odometryRotationSigmaDegPerM != config_.graph.odometryRotationSigmaDegPerM) {
+      config_.graph.odometryTranslationSigmaPerM = likeliest.odometryTranslationSigmaPerM;
+      config_.graph.odometryRotationSigmaDegPerM = likeliest.odometryRotationSigmaDegPerM;
+      rebuild(odometry);
+    }
+  }
   const SolveSummary s = graph_->solve(false);
   times_.graphS += secondsSince(start);
   return s;
@@ -117,7 +136,12 @@ SolveSummary PriorStage::finish() {
 void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph) {
   config_.prior = prior;
   config_.graph = odometryDriftModel(graph, givenPoses_, config_.odometry.drift);
-  auto rebuilt = std::make_unique<PoseGraph>(graph);
+  rebuild(odometry);
+}
+
+void PriorStage::rebuild(const Odometry& odometry) {
+  const PosePriorOptions& prior = config_.prior;
+  auto rebuilt = std::make_unique<PoseGraph>(config_.graph);
   for (size_t k = 0; k < matches_.size(); ++k) {
     const Keyframe& kf = odometry.keyframes()[k];
     rebuilt->addKeyframe(kf.timestampNs, cityTOdom_ * kf.odomTEgo, graph_->pose(k));

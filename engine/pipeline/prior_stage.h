@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "engine/geom/pose_trajectory.h"
@@ -13,7 +14,8 @@
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/match/match_result.h"
 #include "engine/pipeline/config.h"
-#include "engine/pipeline/innovation_gate.h"
+#include "engine/pipeline/drift_model_likelihood.h"
+#include "engine/pipeline/planar_kalman.h"
 
 namespace hdprior {
 
@@ -66,7 +68,8 @@ class PriorStage {
 
   // The odometry's newest keyframe; sweepOf loads the sweep of an odometry frame.
   void addKeyframe(const Odometry& odometry, const SweepOf& sweepOf);
-  SolveSummary finish();
+  // The final batch solve; with graph.estimate_drift_model, under the drift model the priors made likeliest.
+  SolveSummary finish(const Odometry& odometry);
   // Rebuilds the graph from the keyframes and matches so far with other prior and graph options
   // (priors re-made from the same matches), warm-started from the current poses; does not solve.
   void rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph);
@@ -80,6 +83,7 @@ class PriorStage {
  private:
   SE3 predictedPose(const Keyframe& keyframe) const;
   void gatePrior(KeyframeMatch& m);
+  void rebuild(const Odometry& odometry);
 
   const HdMap& map_;
   Config config_;
@@ -87,7 +91,8 @@ class PriorStage {
   bool givenPoses_;
   std::unique_ptr<MapMatcher> matcher_;
   std::unique_ptr<PoseGraph> graph_;
-  InnovationGate gate_;
+  PlanarKalman gate_;  // the graph's prediction and its covariance: gates the priors
+  std::optional<DriftModelLikelihood> driftModels_;
   std::vector<KeyframeMatch> matches_;
   PriorStageTimes times_;
 };

@@ -129,7 +129,7 @@ bool Session::run(const std::function<void(size_t, size_t)>& progress, const std
 SolveSummary Session::optimize() {
   if (!priors_) return {};
   const auto start = Clock::now();
-  const SolveSummary s = priors_->finish();
+  const SolveSummary s = priors_->finish(*odometry_);
   times_.graphS = priors_->times().graphS;
   times_.pipelineS += secondsSince(start);
   return s;
@@ -207,8 +207,8 @@ PipelineRun Session::finish(double mapVoxel) {
   run.odometryDrift = config_.odometry.drift;
   run.givenOdometry = givenOdometry_;
   if (priors_) {
-    run.graphOptions = priors_->graphOptions();
     run.finalSolve = optimize();
+    run.graphOptions = priors_->graphOptions();  // after the solve: the drift model it estimated
     run.optimized = optimizedTrajectory();
     run.optimizedKeyframes = priors_->graph().poses();
     for (size_t k = 0; k < priors_->graph().size(); ++k) run.odometryScales.push_back(priors_->graph().odometryScale(k));

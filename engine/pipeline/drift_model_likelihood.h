@@ -1,0 +1,41 @@
+#pragma once
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/geom/se3.h"
+#include "engine/graph/pose_graph.h"
+#include "engine/pipeline/planar_kalman.h"
+
+namespace hdprior {
+
+struct Keyframe;
+
+// How far the odometry drifts, as the priors see it. The graph's drift model (per-metre sigmas)
+// decides how far the priors may move the odometry, and one model cannot serve every log: the
+// built-in odometry drifts 0.06-0.32 % on the tuning family's logs. Each candidate model (the
+// configured per-metre sigmas times a factor) runs a planar Kalman filter from the start over the
+// odometry steps and the priors the graph takes; the candidate under which the priors were likeliest
+// (the product of their innovation densities) is the model for the final solve.
+class DriftModelLikelihood {
+ public:
+  DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start);
+
+  void step(const Keyframe& keyframe);
+  void observe(const Eigen::Vector3d& prior, const Eigen::Matrix3d& information);
+
+  // The configured options with the likeliest candidate's per-metre sigmas.
+  PoseGraphOptions likeliest() const;
+  const std::vector<double>& factors() const { return factors_; }
+  const std::vector<double>& logLikelihoods() const { return logLikelihood_; }
+
+ private:
+  PoseGraphOptions candidate(size_t i) const;
+
+  PoseGraphOptions configured_;
+  std::vector<double> factors_;
+  std::vector<PlanarKalman> filters_;
+  std::vector<double> logLikelihood_;
+};
+
+}  // namespace hdprior

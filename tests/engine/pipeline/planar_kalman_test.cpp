@@ -1,0 +1,121 @@
+#include "engine/pipeline/planar_kalman.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/pipeline/drift_model_likelihood.h"
+#include "engine/odom/keyframe.h"
+
+namespace hdprior {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// A step's information over [rotation, translation] with these standard deviations per axis.
+Matrix6d stepInformation(double rotationSigma, double translationSigma) {
+  Eigen::Matrix<double, 6, 1> v;
+  v << rotationSigma, rotationSigma, rotationSigma, translationSigma, translationSigma, translationSigma;
+  return v.cwiseAbs2().cwiseInverse().asDiagonal();
+}
+
+SE3 forward(double metres, double yaw = 0.0) {
+  SE3 T = SE3::Identity();
+  T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T.translation().x() = metres;
+  return T;
+}
+
+// A lateral prior (y observed only, vehicle heading +x) with this sigma.
+Eigen::Matrix3d lateralInformation(double sigma) { return Eigen::Vector3d(0.0, 1.0 / (sigma * sigma), 0.0).asDiagonal(); }
+
+TEST(PlanarKalman, ChiSquareQuantilesAreTheTabulatedOnes) {
+  EXPECT_NEAR(chiSquareQuantile(0.99, 1), 6.635, 1e-3);
+  EXPECT_NEAR(chiSquareQuantile(0.99, 2), 9.210, 1e-3);
+  EXPECT_NEAR(chiSquareQuantile(0.99, 3), 11.345, 1e-3);
+  EXPECT_NEAR(chiSquareQuantile(0.95, 1), 3.841, 1e-3);
+}
+
+TEST(PlanarKalman, AHeadingUncertaintyBecomesALateralOneAlongTheWay) {
+  PlanarKalman filter;
+  filter.predict(forward(10.0), stepInformation(1.0 * kDeg, 0.01));
+  // The start is fixed: after one step the covariance is the step's own.
+  EXPECT_NEAR(filter.covariance()(0, 0), 1e-4, 1e-9);
+  EXPECT_NEAR(filter.covariance()(2, 2), std::pow(1.0 * kDeg, 2), 1e-9);
+  // The first step's yaw error turns the second: 10 m on, it is 10 m x 1 deg = 0.17 m across.
+  filter.predict(forward(10.0), stepInformation(1e-6, 0.01));
+  EXPECT_NEAR(std::sqrt(filter.covariance()(1, 1)), std::hypot(0.01, 0.01, 10.0 * kDeg), 1e-3);
+  EXPECT_TRUE(filter.mean().isApprox(Eigen::Vector3d(20.0, 0.0, 0.0)));
+}
+
+TEST(PlanarKalman, AMatchFarAcrossTheRoadFromAGoodPredictionIsImprobable) {
+  PlanarKalman filter;
+  filter.predict(forward(2.0), stepInformation(0.05 * kDeg, 0.05));
+  const PlanarKalman::Innovation far = filter.innovation(Eigen::Vector3d(2.0, 2.0, 0.0), lateralInformation(0.3));
+  EXPECT_EQ(far.dof, 1);
+  EXPECT_GT(far.chi2, chiSquareQuantile(0.99, 1));
+  const PlanarKalman::Innovation near = filter.innovation(Eigen::Vector3d(2.0, 0.3, 0.0), lateralInformation(0.3));
+  EXPECT_LT(near.chi2, chiSquareQuantile(0.99, 1));
+  // What the prior does not observe (along, yaw) is not judged.
+  EXPECT_NEAR(filter.innovation(Eigen::Vector3d(7.0, 0.0, 0.5), lateralInformation(0.3)).chi2, 0.0, 1e-12);
+}
+
+TEST(PlanarKalman, ADriftingPredictionAcceptsWhatAGoodOneRejects) {
+  PlanarKalman good, drifting;
+  for (int i = 0; i < 20; ++i) {
+    good.predict(forward(10.0), stepInformation(0.01 * kDeg, 0.01));
+    drifting.predict(forward(10.0), stepInformation(0.1 * kDeg, 0.07));  // 0.7 % and 1 deg / 100 m
+  }
+  const Eigen::Vector3d prior(200.0, 1.5, 0.0);
+  EXPECT_GT(good.innovation(prior, lateralInformation(0.3)).chi2, chiSquareQuantile(0.99, 1));
+  EXPECT_LT(drifting.innovation(prior, lateralInformation(0.3)).chi2, chiSquareQuantile(0.99, 1));
+}
+
+TEST(PlanarKalman, APriorCorrectsAndShrinksOnlyWhatItObserves) {
+  PlanarKalman filter;
+  filter.predict(forward(10.0), stepInformation(0.5 * kDeg, 0.2));
+  const Eigen::Matrix3d before = filter.covariance();
+  filter.update(filter.innovation(Eigen::Vector3d(10.0, 0.4, 0.0), lateralInformation(0.2)));
+  EXPECT_NEAR(filter.covariance()(0, 0), before(0, 0), 1e-12);  // along: unobserved, unchanged
+  EXPECT_NEAR(filter.covariance()(1, 1), 1.0 / (1.0 / before(1, 1) + 25.0), 1e-9);
+  const double gain = before(1, 1) / (before(1, 1) + 0.04);
+  EXPECT_NEAR(filter.mean().y(), gain * 0.4, 1e-9);
+  EXPECT_NEAR(filter.mean().x(), 10.0, 1e-12);
+}
+
+TEST(PlanarKalman, TheGivenStartAcceptsOnlyMatchesWithinTheirOwnSigma) {
+  const PlanarKalman start;  // zero covariance: the first keyframe is the given start
+  EXPECT_NEAR(start.innovation(Eigen::Vector3d(0.0, 0.6, 0.0), lateralInformation(0.3)).chi2, 4.0, 1e-9);
+}
+
+// Odometry that turns 0.02 deg too far every 2 m (1 deg over 100 m), priors that are right with
+// 0.1 m noise: the likeliest model is one loose enough to let the priors pull the drift out; with an
+// odometry that is right, the tightest.
+PoseGraphOptions likeliestModel(double yawBiasPerStep) {
+  PoseGraphOptions configured;  // 1e-4 per metre
+  DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
+  Keyframe kf;
+  kf.previousTThis = forward(2.0, yawBiasPerStep);
+  kf.relativeCovariance = Matrix6d::Identity() * 1e-8;
+  Eigen::Vector3d truth = Eigen::Vector3d::Zero();
+  const double noise[5] = {0.1, -0.05, 0.08, -0.12, 0.02};
+  for (int k = 1; k <= 100; ++k) {
+    likelihood.step(kf);
+    truth.x() += 2.0;
+    likelihood.observe(truth + Eigen::Vector3d(0.0, noise[k % 5], 0.0), lateralInformation(0.1));
+  }
+  return likelihood.likeliest();
+}
+
+TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
+  const PoseGraphOptions configured;
+  const PoseGraphOptions drifting = likeliestModel(0.02 * kDeg), exact = likeliestModel(0.0);
+  EXPECT_GE(drifting.odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
+  EXPECT_LE(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_EQ(drifting.odometryTranslationSigmaPerM / configured.odometryTranslationSigmaPerM,
+            drifting.odometryRotationSigmaDegPerM / configured.odometryRotationSigmaDegPerM);
+}
+
+}  // namespace
+}  // namespace hdprior
