@@ -16,7 +16,8 @@ std::vector<AteSeries> ateSeries(const render::Analysis& a) {
     series.push_back({AteSeries::Kind::File, "file " + fileName(a.fileName), &a.fileError});
   if (!a.odometryError.empty()) {
     const std::string source = runOverFile ? "file " + fileName(a.odometryFile) : "built-in";
-    series.push_back({AteSeries::Kind::Odometry, "odometry (" + source + ")", &a.odometryError});
+    const AteSeries::Kind kind = runOverFile ? AteSeries::Kind::File : AteSeries::Kind::Odometry;
+    series.push_back({kind, "odometry (" + source + ")", &a.odometryError});
   }
   if (!a.optimizedError.empty()) series.push_back({AteSeries::Kind::Optimized, "optimised", &a.optimizedError});
   return series;

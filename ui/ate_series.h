@@ -16,8 +16,8 @@ struct AteSeries {
 };
 
 // The plot's lines: an opened trajectory file's, the run's odometry (labelled built-in or with the
-// file it came from) and the optimised trajectory, each when computed. The file's own line is left
-// out when the run's odometry is that file (the same poses, labelled so).
+// file it came from, then in the file's colour) and the optimised trajectory, each when computed.
+// The file's own line is left out when the run's odometry is that file (the same poses, labelled so).
 std::vector<AteSeries> ateSeries(const render::Analysis& analysis);
 
 }  // namespace hdprior::ui

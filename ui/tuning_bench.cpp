@@ -14,15 +14,15 @@
 
 namespace hdprior::ui {
 
-std::string benchReport(TuningBench& bench) {
+namespace {
+
+std::string sessionReport(TuningBench& bench, const Session* session) {
+  if (!session) return "bench: no session\n";
   std::string out;
   char line[320];
-  const Session* session = bench.runner().session();
-  if (!session) return "bench: no session\n";
   std::snprintf(line, sizeof line, "bench: sweeps %zu/%zu keyframes %zu\n", session->sweepsDone(), session->sweepCount(),
                 session->odometry().keyframes().size());
   out += line;
-  out += "odometry: " + odometrySourceText(*session) + "\n";
   for (const SkippedSweep& s : session->skippedSweeps()) out += "bench: skipped " + s.file.string() + ": " + s.problem + "\n";
   if (const auto& in = bench.inspection()) {
     const MatchResult& r = in->match;
@@ -52,18 +52,31 @@ std::string benchReport(TuningBench& bench) {
     std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
     out += line;
   }
+  out += "odometry: " + odometrySourceText(*session) + "\n";
   std::snprintf(line, sizeof line, "ate rmse: odometry %.4f optimized %.4f\n", finiteRmse(bench.analysis().odometryError),
                 finiteRmse(bench.analysis().optimizedError));
-  out += line;
-  out += "ate plot:";
-  for (const AteSeries& s : ateSeries(bench.analysis())) out += " [" + s.label + "]";
-  out += "\n";
-  if (!bench.analysis().fileError.empty()) {
-    std::snprintf(line, sizeof line, "ate rmse: file %.4f (%s)\n", finiteRmse(bench.analysis().fileError), bench.analysis().fileName.c_str());
+  return out + line;
+}
+
+// The opened trajectory file and the ATE plot's lines.
+std::string odometryFileReport(const TuningBench& bench) {
+  std::string out;
+  const render::Analysis& a = bench.analysis();
+  if (const auto& given = bench.odometryFile.given()) {
+    char line[320];
+    std::snprintf(line, sizeof line, "odometry file: %s (%s, frame %s, %zu poses) %s, ate rmse %.4f\n", given->file.c_str(),
+                  trajectoryFormatName(given->format), givenOdometryFrameName(given->frame), given->trajectory.size(),
+                  bench.odometryFile.use ? "used by the next run" : "not used", finiteRmse(a.fileError));
     out += line;
   }
-  return out;
+  out += "ate plot:";
+  for (const AteSeries& s : ateSeries(a)) out += " [" + s.label + "]";
+  return out + "\n";
 }
+
+}  // namespace
+
+std::string benchReport(TuningBench& bench) { return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench); }
 
 std::string odometrySourceText(const Session& session) {
   const auto& given = session.givenOdometry();

@@ -116,6 +116,7 @@ TEST(OdometryFile, TheBenchRunsThePipelineOverTheOpenedFile) {
   EXPECT_LT(maxDistance(a.odometry, a.file), 1e-6);  // the run's odometry is the file
   EXPECT_FALSE(a.optimized.empty());
   EXPECT_EQ(labels(a), (std::vector<std::string>{"odometry (file given.tum)", "optimised"}));
+  EXPECT_EQ(ui::ateSeries(a)[0].kind, ui::AteSeries::Kind::File);  // drawn in the file's colour
 
   bench.odometryFile.use = false;
   bench.run();
