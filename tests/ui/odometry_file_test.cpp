@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "engine/io/argoverse_log.h"
-#include "engine/io/tum_trajectory.h"
 #include "test_data.h"
 #include "ui/ate_series.h"
 #include "ui/odometry_file.h"
@@ -15,18 +14,6 @@
 namespace hdprior::test {
 namespace {
 namespace fs = std::filesystem;
-
-// The log's ground truth moved by `offset` (city frame), as another system's trajectory file.
-fs::path writeShiftedTruth(const ArgoverseLog& log, const fs::path& file, const Eigen::Vector3d& offset) {
-  const PoseTrajectory truth = log.cityTEgoAtSweeps();
-  std::vector<SE3> poses;
-  for (SE3 pose : truth.poses()) {
-    pose.translation() += offset;
-    poses.push_back(pose);
-  }
-  writeTum(file, PoseTrajectory(truth.timestamps(), poses));
-  return file;
-}
 
 double maxDistance(const PoseTrajectory& a, const PoseTrajectory& b) {
   EXPECT_EQ(a.size(), b.size());
@@ -48,7 +35,7 @@ TEST(OdometryFile, PlacesTheFileAsARunOverItWould) {
   const ArgoverseLog log(sharedLog());
   const fs::path dir = freshOutputDir("ui_odometry_file_frames");
   ui::OdometryFile file;
-  file.path = writeShiftedTruth(log, dir / "shifted.tum", {100.0, 50.0, 0.0}).string();
+  file.path = writeMovedTruth(sharedLog(), dir / "shifted.tum", 100.0, 50.0, 0.0).string();
   ASSERT_TRUE(file.open(log)) << file.error();
   EXPECT_EQ(file.format, ui::OdometryFile::Format::Tum);  // detected from .tum
   EXPECT_LT(maxDistance(file.cityTrajectory(), log.cityTEgoAtSweeps()), 1e-5);
@@ -66,7 +53,7 @@ TEST(OdometryFile, ABadFileIsOneLineNamingTheFileAndTheLine) {
   const ArgoverseLog log(sharedLog());
   const fs::path dir = freshOutputDir("ui_odometry_file_bad");
   ui::OdometryFile file;
-  file.path = writeShiftedTruth(log, dir / "good.tum", Eigen::Vector3d::Zero()).string();
+  file.path = writeMovedTruth(sharedLog(), dir / "good.tum", 0.0, 0.0, 0.0).string();
   ASSERT_TRUE(file.open(log));
   std::ofstream(dir / "bad.tum") << "# header\n315966265.2 1 2 3\n";
   file.path = (dir / "bad.tum").string();
@@ -94,7 +81,7 @@ TEST(OdometryFile, TheBenchRunsThePipelineOverTheOpenedFile) {
   const ArgoverseLog log(sharedLog());
   const fs::path dir = freshOutputDir("ui_odometry_file_bench");
   ui::TuningBench bench(log, Config{});
-  bench.odometryFile.path = writeShiftedTruth(log, dir / "given.tum", {0.3, -0.2, 0.0}).string();
+  bench.odometryFile.path = writeMovedTruth(sharedLog(), dir / "given.tum", 0.3, -0.2, 0.0).string();
   bench.odometryFile.frame = GivenOdometryFrame::City;
   ASSERT_TRUE(bench.openOdometryFile()) << bench.odometryFile.error();
   EXPECT_TRUE(bench.poll());

@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "engine/io/argoverse_log.h"
-#include "engine/io/tum_trajectory.h"
 #include "engine/sim/demo_log.h"
 #include "render/image_compare.h"
 #include "test_data.h"
@@ -203,12 +201,8 @@ const std::string kOnlyTheFileLayer =
 // `hdprior run --odometry` gets; then the same run with the built-in odometry beside the file.
 TEST(ViewCommand, RunsThePipelineOverAnOpenedTrajectoryFile) {
   const fs::path dir = freshOutputDir("view_odometry_file");
-  const ArgoverseLog log(sharedLog());
-  const PoseTrajectory truth = log.cityTEgoAtSweeps();
-  std::vector<SE3> moved = truth.poses();
-  for (SE3& pose : moved) pose.translation() += Eigen::Vector3d(0.3, -0.2, 0.0);
-  const fs::path file = dir / "given.tum", opened = dir / "opened.png", ran = dir / "ran.png";
-  writeTum(file, PoseTrajectory(truth.timestamps(), moved));
+  const fs::path file = writeMovedTruth(sharedLog(), dir / "given.tum", 0.3, -0.2, 0.0);
+  const fs::path opened = dir / "opened.png", ran = dir / "ran.png";
   writeText(dir / "script.txt", "wait 2\nodometry " + file.string() + " tum city\nreport\n" + kOnlyTheFileLayer + "wait 2\nscreenshot " + opened.string() +
                                     "\nrun\nreport\n" + kOnlyTheFileLayer + "wait 2\nscreenshot " + ran.string() + "\nuse-odometry builtin\nrun\nreport\n");
   const CommandResult r = runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt"), dir);

@@ -34,10 +34,10 @@ struct PlotArea {
   }
 };
 
-void drawSeries(ImDrawList* draw, const PlotArea& area, const std::vector<double>& errors, ImU32 color) {
+void drawSeries(ImDrawList* draw, const PlotArea& area, const std::vector<double>& errors, ImU32 color, float thickness) {
   std::vector<ImVec2> line;
   const auto flush = [&] {
-    if (line.size() > 1) draw->AddPolyline(line.data(), int(line.size()), color, 0, 1.5f);
+    if (line.size() > 1) draw->AddPolyline(line.data(), int(line.size()), color, 0, thickness);
     line.clear();
   };
   for (size_t i = 0; i < errors.size(); ++i) {
@@ -98,7 +98,9 @@ void drawPlotsPanel(AppState& state) {
   area.maxError = niceCeiling(maxError);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   drawAxes(draw, area);
-  for (const AteSeries& s : series) drawSeries(draw, area, *s.errors, seriesColor(s.kind));
+  // Earlier lines wider: where two coincide (an optimisation that changed little) both stay visible.
+  for (size_t i = 0; i < series.size(); ++i)
+    drawSeries(draw, area, *series[i].errors, seriesColor(series[i].kind), 1.5f + 2.0f * float(series.size() - 1 - i));
   const ImVec2 cursor = area.at(state.frame().index, 0.0);
   draw->AddLine(ImVec2(cursor.x, area.min.y), ImVec2(cursor.x, area.max.y), IM_COL32(255, 255, 255, 200), 1.0f);
 
