@@ -82,7 +82,8 @@ void Viewer::finishLoading() {
     state_->open(loading_.get());
     state_->bench().config = options_.config;
     if (options_.configPath) state_->bench().configPath = *options_.configPath;
-    if (options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
+    // view --odometry belongs to the log given with it, not to one opened later from the panel.
+    if (loadingFromOptions_ && options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
       throw *state_->bench().odometryFile.failure();
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;
