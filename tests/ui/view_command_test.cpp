@@ -33,10 +33,13 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does.
+// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does. The X authority file is
+// the test's own (-f): xvfb-run then has no temporary folder to remove, whose removal sometimes fails
+// under load and turns the command's exit status into 5.
 CommandResult runWithDisplay(const std::string& args, const fs::path& dir, const std::string& env = "") {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = env + " xvfb-run -a -s '-screen 0 1280x800x24' '" + std::string(HDPRIOR_BINARY) + "' " + args +
+  const std::string cmd = env + " xvfb-run -a -f " + quoted(dir / "Xauthority") + " -s '-screen 0 1280x800x24' '" +
+                          std::string(HDPRIOR_BINARY) + "' " + args +
                           " >" + quoted(out) + " 2>" + quoted(err);
   const int raw = std::system(cmd.c_str());
   CommandResult r;

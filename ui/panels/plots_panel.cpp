@@ -100,7 +100,7 @@ void drawPlotsPanel(AppState& state) {
   drawAxes(draw, area);
   // Earlier lines wider: where two coincide (an optimisation that changed little) both stay visible.
   for (size_t i = 0; i < series.size(); ++i)
-    drawSeries(draw, area, *series[i].errors, seriesColor(series[i].kind), 1.5f + 2.0f * float(series.size() - 1 - i));
+    drawSeries(draw, area, *series[i].errors, seriesColor(series[i].kind), 1.5f + 1.0f * float(series.size() - 1 - i));
   const ImVec2 cursor = area.at(state.frame().index, 0.0);
   draw->AddLine(ImVec2(cursor.x, area.min.y), ImVec2(cursor.x, area.max.y), IM_COL32(255, 255, 255, 200), 1.0f);
 
