@@ -27,8 +27,4 @@ OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string
   return o;
 }
 
-GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log) {
-  return readGivenOdometry({file, options.format, options.times}, options.frame, log.sweepTimestamps());
-}
-
 }  // namespace hdprior::app

@@ -21,14 +21,6 @@ std::filesystem::path outputFolder(const std::filesystem::path& out);
 // trajectory_file.h), --odometry-frame first|city (default first) and, for commands that accept
 // it, --odometry-times FILE. Throws Error naming the option for an unknown value, or when they come
 // without `sourceOption` (--odometry, --odometry-dir).
-struct OdometryFileOptions {
-  std::optional<TrajectoryFormat> format;
-  GivenOdometryFrame frame = GivenOdometryFrame::First;
-  std::optional<std::filesystem::path> times;
-};
 OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string& sourceOption);
-
-// The trajectory `file` read as the log's odometry.
-GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log);
 
 }  // namespace hdprior::app

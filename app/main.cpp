@@ -26,7 +26,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
       {"demo", {hdprior::app::runDemo, "simulate (or reuse) a town log, run with and without priors: hdprior demo [--out DIR] [--town SEED --seconds N]"}},
       {"sim", {hdprior::app::runSim, "simulate an Argoverse 2 log: hdprior sim (--town SEED | --map LOG) --out DIR"}},
       {"match", {hdprior::app::runMatch, "match a frame's road points to the map: hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--config FILE]"}},
-      {"view", {hdprior::app::runView, "the desktop app and tuning bench: hdprior view [LOG] [--script FILE | --frames N --exit] [--screenshot FILE.png] [--config FILE]"}},
+      {"view", {hdprior::app::runView, "the desktop app and tuning bench: hdprior view [LOG] [--script FILE | --frames N --exit] [--screenshot FILE.png] [--config FILE] [--odometry FILE [--odometry-format tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]"}},
   };
   return table;
 }

@@ -5,9 +5,11 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/pipeline_run.h"
 #include "engine/pipeline/session.h"
@@ -19,14 +21,15 @@
 namespace hdprior::app {
 namespace {
 
-// What the analysis layers draw: the whole run with priors and the batch solve, and a keyframe's
-// inspection and cost landscape.
+// What the analysis layers draw: the whole run with priors (over a given odometry file, as `run
+// --odometry`) and the batch solve, the file's own trajectory, and a keyframe's inspection and cost landscape.
 render::Analysis runAnalysis(const ArgoverseLog& log, const HdMap& map, const Config& config,
-                             const std::optional<size_t>& keyframe) {
-  Session session(log, &map, config);
+                             const std::optional<size_t>& keyframe, const std::optional<GivenOdometry>& given) {
+  Session session(log, &map, config, {.givenOdometry = given});
   session.run();
   session.optimize();
   render::Analysis analysis = render::analysisOf(session);
+  if (given) render::setFileTrajectory(analysis, log.cityTEgoAtSweeps(), givenOdometryInCity(*given, log), given->file);
   if (keyframe) render::inspect(analysis, session, map, *keyframe);
   return analysis;
 }
@@ -41,10 +44,13 @@ bool anyNeedsAnalysis(const std::vector<std::string>& layers) {
 
 int runSnapshot(const std::vector<std::string>& args) {
   const CommandLine cl(
-      args, {.valued = {"frame", "out", "size", "view", "layers", "keyframe", "config"}, .flags = {},
+      args, {.valued = {"frame", "out", "size", "view", "layers", "keyframe", "config", "odometry", "odometry-format",
+                        "odometry-frame", "odometry-times"},
+             .flags = {},
              .minPositional = 1, .maxPositional = 1,
              .usage = "hdprior snapshot LOG (--frame N | --keyframe K) --out FILE.png [--size 1280x720] "
-                      "[--view top|orbit|landscape|inspector] [--layers a,b,c] [--config FILE]; "
+                      "[--view top|orbit|landscape|inspector] [--layers a,b,c] [--config FILE] [--odometry FILE [--odometry-format "
+                      "tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]; "
                       "  defaults: --view top, --layers all (top, orbit) | drivable,landscape,boundary,road_points,match "
                       "(landscape) | drivable,boundary,keyframes,road_points,match (inspector, non-ground shown); "
                       "landscape and inspector need --keyframe; --frame defaults to keyframe K's frame"});
@@ -70,17 +76,21 @@ int runSnapshot(const std::vector<std::string>& args) {
   if (!std::filesystem::is_directory(outDir)) throw Error(out.string(), "its folder does not exist");
   if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
   const Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
+  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
 
   const ArgoverseLog log(cl.positional()[0]);
   if (cl.has("frame") && size_t(frameOption) >= log.sweepCount())
     throw Error("option --frame", "frame " + std::to_string(frameOption) + " is out of range (the log has " +
                                       std::to_string(log.sweepCount()) + " sweeps)");
+  const std::optional<GivenOdometry> given =
+      cl.value("odometry") ? std::optional(givenOdometryOf(*cl.value("odometry"), odometryFile, log)) : std::nullopt;
+  if (given) givenOdometryInCity(*given, log);  // the file covers the sweeps: checked before the map loads
   const bool analysisNeeded = keyframe || anyNeedsAnalysis(options.layers);
   const bool ndtCells = std::find(options.layers.begin(), options.layers.end(), "ndt_cells") != options.layers.end();
   // The pipeline and the NDT cells need the matcher's map; the others load faster without it.
   const std::unique_ptr<HdMap> map = analysisNeeded || ndtCells ? loadPriorMap(log, config)
                                                                 : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
-  render::Analysis analysis = analysisNeeded ? runAnalysis(log, *map, config, keyframe) : render::Analysis{};
+  render::Analysis analysis = analysisNeeded ? runAnalysis(log, *map, config, keyframe, given) : render::Analysis{};
   const size_t frame = cl.has("frame") ? size_t(frameOption) : analysis.inspection->frame;
   render::Snapshotter snapshotter(log, *map, options);
   snapshotter.setAnalysis(std::move(analysis));

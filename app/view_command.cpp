@@ -4,7 +4,10 @@
 
 #include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "engine/error.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/sim/demo_log.h"
 #include "render/snapshot.h"
@@ -34,13 +37,25 @@ void checkPngPath(const fs::path& out) {
   if (fs::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
 }
 
+// The file read and checked against the log (coverage included) before the window opens, as `run` does.
+GivenOdometry checkedOdometryFile(const fs::path& file, const OdometryFileOptions& options, const std::optional<fs::path>& dir) {
+  if (!dir) throw Error("option --odometry", "needs a log (the demo log could not be generated)");
+  const ArgoverseLog log(*dir);
+  GivenOdometry given = givenOdometryOf(file, options, log);
+  givenOdometryInCity(given, log);
+  return given;
+}
+
 }  // namespace
 
 int runView(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size", "config"}, .flags = {"exit"},
+  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size", "config", "odometry", "odometry-format",
+                                         "odometry-frame", "odometry-times"},
+                              .flags = {"exit"},
                               .minPositional = 0, .maxPositional = 1,
                               .usage = "hdprior view [LOG] [--script FILE | --frames N --exit] "
-                                       "[--screenshot FILE.png] [--size 1280x800] [--config FILE]"});
+                                       "[--screenshot FILE.png] [--size 1280x800] [--config FILE] [--odometry FILE "
+                                       "[--odometry-format tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]"});
   ui::ViewerOptions options;
   render::parseSize(cl.value("size").value_or("1280x800"), options.width, options.height);
   if (cl.has("script") && (cl.has("frames") || cl.has("exit")))
@@ -70,6 +85,8 @@ int runView(const std::vector<std::string>& args) {
     options.log = bundledDemoLog();
   }
   if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (the demo log could not be generated)");
+  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
+  if (const auto file = cl.value("odometry")) options.odometry = checkedOdometryFile(*file, odometryFile, options.log);
   return ui::runViewer(options);
 }
 

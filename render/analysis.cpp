@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "engine/error.h"
 #include "engine/pipeline/session.h"
@@ -38,6 +39,7 @@ Analysis analysisOf(const Session& session) {
   a.odometry = session.odometryTrajectory();
   a.optimized = session.optimizedTrajectory();
   a.odometryError = perSweep(translationErrors(a.groundTruth, a.odometry), session.skippedSweeps());
+  if (session.givenOdometry()) a.odometryFile = session.givenOdometry()->file;
   if (!a.optimized.empty()) a.optimizedError = perSweep(translationErrors(a.groundTruth, a.optimized), session.skippedSweeps());
   const std::vector<SE3> poses = session.keyframePoses();
   const auto& keyframes = session.odometry().keyframes();
@@ -46,6 +48,12 @@ Analysis analysisOf(const Session& session) {
   for (const KeyframeMatch& m : session.matches())
     if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.match.status;
   return a;
+}
+
+void setFileTrajectory(Analysis& analysis, const PoseTrajectory& truth, PoseTrajectory file, std::string name) {
+  analysis.fileError = translationErrors(truth, file);
+  analysis.file = std::move(file);
+  analysis.fileName = std::move(name);
 }
 
 void inspect(Analysis& analysis, const Session& session, const HdMap& map, size_t k) {

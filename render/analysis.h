@@ -1,5 +1,6 @@
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/geom/pose_trajectory.h"
@@ -28,6 +29,12 @@ struct Analysis {
   PoseTrajectory groundTruth, odometry, optimized;     // city_T_ego; empty when not computed
   std::vector<double> odometryError, optimizedError;   // ATE translation per sweep done of odometry / optimized
                                                        // (NaN: no truth, or a sweep skipped as unreadable)
+  std::string odometryFile;                            // the run's odometry came from this trajectory file; empty: built-in
+  // A trajectory file opened as the odometry (before or without a run over it): city_T_ego at every
+  // sweep, anchored as a run anchors it, and its ATE translation per sweep.
+  PoseTrajectory file;
+  std::vector<double> fileError;
+  std::string fileName;
   std::vector<KeyframeMark> keyframes;
   std::optional<KeyframeInspection> inspection;        // the selected keyframe
   std::optional<CostLandscape> landscape;              // around the inspection's match estimate
@@ -35,6 +42,8 @@ struct Analysis {
 
 // The trajectories, per-pose errors and keyframes of a session as it stands.
 Analysis analysisOf(const Session& session);
+// Sets the trajectory file's name, its poses (city_T_ego at the sweeps) and their errors against `truth`.
+void setFileTrajectory(Analysis& analysis, const PoseTrajectory& truth, PoseTrajectory file, std::string name);
 // Keyframe k inspected with the session's road-point and match options, and the cost landscape
 // (default extent) of its road points around the match estimate on `map` (the session's map).
 // Throws Error for a keyframe out of range, without priors, or without road points.

@@ -61,6 +61,7 @@ const std::vector<Entry>& registry() {
       entry<TrajectoryLayer>(),
       trajectoryEntry(Which::Odometry, EstimatedTrajectoryLayer::kOdometryName),
       trajectoryEntry(Which::Optimized, EstimatedTrajectoryLayer::kOptimizedName),
+      trajectoryEntry(Which::File, EstimatedTrajectoryLayer::kFileName),
       analysisEntry<KeyframesLayer>(),
       entry<AccumulatedSweepsLayer>(false),
       entry<LidarSweepLayer>(),

@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "engine/io/argoverse_log.h"
+#include "engine/io/tum_trajectory.h"
 #include "engine/sim/log_writer.h"
 
 namespace hdprior::test {
@@ -67,6 +69,15 @@ SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, d
   sim.seconds = seconds;
   sim.outDir = freshOutputDir(name + "_" + std::to_string(::getpid()));
   return {sim.outDir, simulateLog(sim).dir};
+}
+
+std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const std::filesystem::path& file, double dx, double dy,
+                                      double dz) {
+  const PoseTrajectory truth = ArgoverseLog(log).cityTEgoAtSweeps();
+  std::vector<SE3> moved = truth.poses();
+  for (SE3& pose : moved) pose.translation() += Eigen::Vector3d(dx, dy, dz);
+  writeTum(file, PoseTrajectory(truth.timestamps(), moved));
+  return file;
 }
 
 }  // namespace hdprior::test

@@ -21,6 +21,11 @@ SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, d
 // A whole file as bytes in a string (empty if it cannot be read).
 std::string readFileText(const std::filesystem::path& path);
 
+// A log's ground truth at its sweeps moved by (dx, dy, dz) in the city frame, written to `file` as
+// TUM: another system's trajectory of the log (read with --odometry-frame city it is off by the move).
+std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const std::filesystem::path& file, double dx, double dy,
+                                      double dz);
+
 // Runs the hdprior binary with arguments; returns exit status, captures stdout/stderr.
 struct CommandResult {
   int status = -1;

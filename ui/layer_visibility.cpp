@@ -14,6 +14,7 @@ const std::vector<std::string>& defaultVisibleLayers() {
 bool hasAnalysisData(const std::string& name, const render::Analysis& analysis) {
   if (name == "odometry_trajectory") return !analysis.odometry.empty();
   if (name == "optimized_trajectory") return !analysis.optimized.empty();
+  if (name == "file_trajectory") return !analysis.file.empty();
   if (name == "keyframes") return !analysis.keyframes.empty();
   if (name == "landscape") return analysis.landscape.has_value();
   if (name == "road_points" || name == "match") return analysis.inspection.has_value();

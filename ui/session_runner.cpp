@@ -44,7 +44,7 @@ void SessionRunner::ensureSession() {
     mapConfig.match.cellSizes = tuningCellSizes(config_);
     map_ = loadPriorMap(log_, mapConfig);
   }
-  if (!session_) session_ = std::make_unique<Session>(log_, map_.get(), config_);
+  if (!session_) session_ = std::make_unique<Session>(log_, map_.get(), config_, options_);
 }
 
 void SessionRunner::run() {
@@ -85,9 +85,10 @@ void SessionRunner::optimize(const PosePriorOptions& prior, const PoseGraphOptio
   });
 }
 
-void SessionRunner::restart(const Config& config) {
+void SessionRunner::restart(const Config& config, const PipelineOptions& options) {
   if (busy()) return;
   config_ = config;
+  options_ = options;
   session_.reset();
   lastSolve_.reset();
   lastJob_ = "session reset";

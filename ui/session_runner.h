@@ -31,11 +31,12 @@ class SessionRunner {
   float progress() const { return progress_.load(); }  // of the running job, 0..1
 
   // Each starts a job (ignored while one runs). restart() drops the session: the next job starts a
-  // new one with `config` (the odometry, keyframe and road-point options take effect then).
+  // new one with `config` (the odometry, keyframe and road-point options take effect then) and
+  // `options` (a given odometry: the run over a trajectory file, as `run --odometry`).
   void run();
   void stepKeyframe();
   void optimize(const PosePriorOptions& prior, const PoseGraphOptions& graph);
-  void restart(const Config& config);
+  void restart(const Config& config, const PipelineOptions& options = {});
   // The global map from the keyframe sweeps at the session's final poses, voxelised, to a PLY file.
   void exportMap(const std::filesystem::path& file, double voxel);
   void cancel() { cancel_ = true; }
@@ -60,6 +61,7 @@ class SessionRunner {
 
   const ArgoverseLog& log_;
   Config config_;
+  PipelineOptions options_;
   std::unique_ptr<HdMap> map_;
   std::unique_ptr<Session> session_;
   std::future<void> job_;

@@ -7,16 +7,19 @@
 
 #include "engine/error.h"
 #include "engine/geom/se2.h"
+#include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
 #include "engine/odom/odometry.h"
+#include "ui/ate_series.h"
 
 namespace hdprior::ui {
 
-std::string benchReport(TuningBench& bench) {
+namespace {
+
+std::string sessionReport(TuningBench& bench, const Session* session) {
+  if (!session) return "bench: no session\n";
   std::string out;
   char line[320];
-  const Session* session = bench.runner().session();
-  if (!session) return "bench: no session\n";
   std::snprintf(line, sizeof line, "bench: sweeps %zu/%zu keyframes %zu\n", session->sweepsDone(), session->sweepCount(),
                 session->odometry().keyframes().size());
   out += line;
@@ -49,9 +52,36 @@ std::string benchReport(TuningBench& bench) {
     std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
     out += line;
   }
+  out += "odometry: " + odometrySourceText(*session) + "\n";
   std::snprintf(line, sizeof line, "ate rmse: odometry %.4f optimized %.4f\n", finiteRmse(bench.analysis().odometryError),
                 finiteRmse(bench.analysis().optimizedError));
   return out + line;
+}
+
+// The opened trajectory file and the ATE plot's lines.
+std::string odometryFileReport(const TuningBench& bench) {
+  std::string out;
+  const render::Analysis& a = bench.analysis();
+  if (const auto& given = bench.odometryFile.given()) {
+    char line[320];
+    std::snprintf(line, sizeof line, "odometry file: %s (%s, frame %s, %zu poses) %s, ate rmse %.4f\n", given->file.c_str(),
+                  trajectoryFormatName(given->format), givenOdometryFrameName(given->frame), given->trajectory.size(),
+                  bench.odometryFile.use ? "used by the next run" : "not used", finiteRmse(a.fileError));
+    out += line;
+  }
+  out += "ate plot:";
+  for (const AteSeries& s : ateSeries(a)) out += " [" + s.label + "]";
+  return out + "\n";
+}
+
+}  // namespace
+
+std::string benchReport(TuningBench& bench) { return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench); }
+
+std::string odometrySourceText(const Session& session) {
+  const auto& given = session.givenOdometry();
+  if (!given) return "built-in lidar odometry";
+  return "file " + given->file + " (" + trajectoryFormatName(given->format) + ", frame " + givenOdometryFrameName(given->frame) + ")";
 }
 
 double finiteRmse(const std::vector<double>& errors) {
@@ -65,7 +95,36 @@ double finiteRmse(const std::vector<double>& errors) {
   return n ? std::sqrt(sum / double(n)) : NAN;
 }
 
-TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config(config), runner_(log, config) {}
+TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config(config), log_(log), runner_(log, config) {}
+
+bool TuningBench::openOdometryFile() {
+  const bool opened = odometryFile.open(log_);
+  showOdometryFile();
+  return opened;
+}
+
+bool TuningBench::openOdometryFile(GivenOdometry given) {
+  const bool opened = odometryFile.open(std::move(given), log_);
+  showOdometryFile();
+  return opened;
+}
+
+void TuningBench::closeOdometryFile() {
+  odometryFile.close();
+  showOdometryFile();
+}
+
+void TuningBench::showOdometryFile() {
+  const auto& given = odometryFile.given();
+  render::setFileTrajectory(analysis_, log_.cityTEgoAtSweeps(), odometryFile.cityTrajectory(), given ? given->file : "");
+  changed_ = true;
+}
+
+PipelineOptions TuningBench::pipelineOptions() const {
+  PipelineOptions options;
+  options.givenOdometry = odometryFile.forRun();
+  return options;
+}
 
 bool TuningBench::poll() {
   pollLandscape();
@@ -89,6 +148,7 @@ void TuningBench::refresh() {
   analysis_ = render::analysisOf(*session);
   analysis_.inspection = std::move(inspection);
   analysis_.landscape = std::move(landscape);
+  showOdometryFile();
 }
 
 // The landscape takes a second or more (thousands of poses x thousands of points): it runs on its own
@@ -133,21 +193,24 @@ void TuningBench::waitForLandscape() {
 
 void TuningBench::run() {
   if (runner_.busy()) return;
-  runner_.restart(config);
+  runner_.restart(config, pipelineOptions());
   runner_.run();
   selected_.reset();
   analysis_ = {};
+  showOdometryFile();
   ++landscapeGeneration_;  // a landscape still being computed belongs to the old session
   changed_ = true;
 }
 
 void TuningBench::stepKeyframe() {
-  if (!runner_.session()) runner_.restart(config);
+  if (!runner_.session()) runner_.restart(config, pipelineOptions());
   runner_.stepKeyframe();
   selectNewest_ = true;
 }
 
 void TuningBench::optimize() { runner_.optimize(config.prior, config.graph); }
+
+void TuningBench::reset() { runner_.restart(config, pipelineOptions()); }
 
 size_t TuningBench::keyframeCount() {
   const Session* session = runner_.session();

@@ -11,6 +11,7 @@
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/keyframe_inspection.h"
 #include "render/analysis.h"
+#include "ui/odometry_file.h"
 #include "ui/session_runner.h"
 
 namespace hdprior::ui {
@@ -29,6 +30,16 @@ class TuningBench {
   CostLandscapeOptions landscapeOptions;
   bool landscapeEnabled = true;
 
+  // A trajectory file opened as the odometry: drawn as the file_trajectory layer, plotted, and taken
+  // by the next run, step or reset while its `use` is on.
+  OdometryFile odometryFile;
+  // Opens odometryFile with its fields (false: its error() says why) / closes it; the analysis follows.
+  bool openOdometryFile();
+  bool openOdometryFile(GivenOdometry given);
+  void closeOdometryFile();
+  // What a new session runs with: the odometry file when opened and used (run --odometry).
+  PipelineOptions pipelineOptions() const;
+
   SessionRunner& runner() { return runner_; }
   // Once a UI frame; true when the analysis changed (a job ended, a keyframe was matched).
   bool poll();
@@ -36,6 +47,7 @@ class TuningBench {
   void run();           // a new session with `config`, to the end, optimised
   void stepKeyframe();  // the current session (or a new one) to its next keyframe, then inspects it
   void optimize();      // the graph with config.prior and config.graph
+  void reset();         // drops the session: the next job starts a new one with config and pipelineOptions()
   // Selects keyframe k and matches it with config (road points, match options) from the pose the
   // run started its match from, offset by `startOffset` (dx forward, dy left, dyaw; its frame).
   void selectKeyframe(size_t k);
@@ -69,9 +81,11 @@ class TuningBench {
     size_t generation = 0;
   };
   void refresh();
+  void showOdometryFile();
   void requestLandscape(LandscapeRequest request);
   void pollLandscape();
 
+  const ArgoverseLog& log_;
   SessionRunner runner_;
   std::optional<size_t> selected_;
   render::Analysis analysis_;
@@ -86,6 +100,9 @@ class TuningBench {
 // What the bench shows, as text lines (`report` in view scripts): the session, the inspected
 // keyframe's match and its error against the truth, the last solve, the ATE.
 std::string benchReport(TuningBench& bench);
+
+// Where the session's odometry comes from: "built-in lidar odometry" or "file F (tum, frame first)".
+std::string odometrySourceText(const Session& session);
 
 // The RMSE of the finite values (per-pose errors are NaN where there is no ground truth); NaN if none.
 double finiteRmse(const std::vector<double>& errors);

@@ -47,14 +47,16 @@ bool isLayer(const std::string& s) {
 
 // Why the arguments are wrong for the verb; empty when they are fine.
 std::string checkArguments(const std::string& verb, const std::vector<std::string>& a) {
-  static const std::map<std::string, size_t> arity = {{"frame", 1}, {"step", 1}, {"play", 1},    {"pause", 0},
-                                                      {"view", 1},  {"layer", 2}, {"opacity", 2}, {"wait", 1},
-                                                      {"screenshot", 1}, {"exit", 0}, {"run", 0},
-                                                      {"step-keyframe", 0}, {"keyframe", 1}, {"match", 0},
-                                                      {"optimize", 0}, {"offset", 3}, {"tab", 1}, {"report", 0}};
+  static const std::map<std::string, std::pair<size_t, size_t>> arity = {
+      {"frame", {1, 1}}, {"step", {1, 1}}, {"play", {1, 1}}, {"pause", {0, 0}}, {"view", {1, 1}}, {"layer", {2, 2}},
+      {"opacity", {2, 2}}, {"wait", {1, 1}}, {"screenshot", {1, 1}}, {"exit", {0, 0}}, {"run", {0, 0}},
+      {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"offset", {3, 3}},
+      {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}};
   const auto it = arity.find(verb);
   if (it == arity.end()) return "unknown command '" + verb + "'";
-  if (a.size() != it->second) return "'" + verb + "' takes " + std::to_string(it->second) + " argument(s)";
+  const auto [least, most] = it->second;
+  if (a.size() < least || a.size() > most)
+    return "'" + verb + "' takes " + std::to_string(least) + (least == most ? "" : " to " + std::to_string(most)) + " argument(s)";
   if ((verb == "frame" || verb == "wait") && (!isInteger(a[0]) || a[0][0] == '-'))
     return "'" + verb + "' needs a non-negative integer";
   if (verb == "step" && !isInteger(a[0])) return "'step' needs an integer";
@@ -69,6 +71,10 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
   if (verb == "offset" && !std::all_of(a.begin(), a.end(), isNumber)) return "'offset' needs three numbers";
   if (verb == "tab" && std::find(kBenchTabs.begin(), kBenchTabs.end(), a[0]) == kBenchTabs.end())
     return "'tab' needs Pipeline, NDT, PGO, Keyframe or Export";
+  if (verb == "odometry" && a.size() > 1 && a[1] != "auto" && a[1] != "tum" && a[1] != "kitti")
+    return "'odometry' needs the format auto, tum or kitti";
+  if (verb == "odometry" && a.size() > 2 && a[2] != "first" && a[2] != "city") return "'odometry' needs the frame first or city";
+  if (verb == "use-odometry" && a[0] != "file" && a[0] != "builtin") return "'use-odometry' needs file or builtin";
   return "";
 }
 

@@ -25,7 +25,10 @@ namespace hdprior::ui {
 //   offset DX DY DYAW_DEG       the tuning panel's start offset (forward, left, yaw); re-matches
 //   optimize                    "optimise now" with the tuned prior and graph options
 //   tab Pipeline|NDT|PGO|Keyframe|Export   bring a bench tab to the front
-//   report                      print what the bench shows (match, solve, ATE) to stdout
+//   report                      print what the bench shows (odometry, match, solve, ATE) to stdout
+//   odometry FILE [auto|tum|kitti] [first|city]   open a trajectory file as the odometry (the
+//                               Pipeline tab's Open; a bad file stops the script with its error)
+//   use-odometry file|builtin   the Pipeline tab's checkbox: the next run over the file or not
 inline constexpr std::array<const char*, 5> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Export"};
 
 struct ScriptCommand {

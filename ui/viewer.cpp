@@ -82,6 +82,9 @@ void Viewer::finishLoading() {
     state_->open(loading_.get());
     state_->bench().config = options_.config;
     if (options_.configPath) state_->bench().configPath = *options_.configPath;
+    // view --odometry belongs to the log given with it, not to one opened later from the panel.
+    if (loadingFromOptions_ && options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
+      throw *state_->bench().odometryFile.failure();
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;
     loadError_ = e.what();
@@ -162,6 +165,18 @@ bool Viewer::runBenchCommand(const ScriptCommand& c) {
     bench.matchSelected();
     bench.waitForLandscape();
     state_->pollBench();
+  } else if (c.verb == "odometry") {
+    OdometryFile& file = bench.odometryFile;
+    file.path = c.args[0];
+    file.times.clear();
+    file.format = c.args.size() > 1 && c.args[1] == "tum" ? OdometryFile::Format::Tum
+                  : c.args.size() > 1 && c.args[1] == "kitti" ? OdometryFile::Format::Kitti
+                                                               : OdometryFile::Format::Auto;
+    file.frame = c.args.size() > 2 && c.args[2] == "city" ? GivenOdometryFrame::City : GivenOdometryFrame::First;
+    if (!bench.openOdometryFile()) throw Error("script line " + std::to_string(c.line), file.error());
+    state_->pollBench();
+  } else if (c.verb == "use-odometry") {
+    bench.odometryFile.use = c.args[0] == "file";
   } else if (c.verb == "tab") {
     state_->selectTab = c.args[0];
   } else if (c.verb == "report") {

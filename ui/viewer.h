@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 #include "ui/app_state.h"
 #include "ui/view_script.h"
@@ -28,6 +29,7 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
   Config config;                                    // the tuning bench starts from it ...
   std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
+  std::optional<GivenOdometry> odometry;            // view --odometry FILE: opened in the Pipeline tab
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
   bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/error.h"
+#include "engine/io/argoverse_log.h"
 #include "engine/io/seconds_text.h"
 
 namespace hdprior {
@@ -55,6 +56,21 @@ PoseTrajectory givenOdometryAtSweeps(const GivenOdometry& given, const std::vect
   std::vector<SE3> odomTEgo;
   for (const SE3& p : filePoses) odomTEgo.push_back(odomTFile * p);
   return PoseTrajectory(sweepTimestampsNs, std::move(odomTEgo), given.file);
+}
+
+GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log) {
+  return readGivenOdometry({file, options.format, options.times}, options.frame, log.sweepTimestamps());
+}
+
+PoseTrajectory givenOdometryInCity(const GivenOdometry& given, const ArgoverseLog& log) {
+  const std::vector<int64_t>& sweeps = log.sweepTimestamps();
+  if (sweeps.empty() || !log.cityTEgo().covers(sweeps.front()))
+    throw Error(log.dir().string(), "the ground-truth poses do not cover the first sweep (needed to anchor the start)");
+  const SE3 cityTOdom = log.cityTEgo().at(sweeps.front());
+  const PoseTrajectory odomTEgo = givenOdometryAtSweeps(given, sweeps, cityTOdom);
+  std::vector<SE3> cityTEgo;
+  for (const SE3& pose : odomTEgo.poses()) cityTEgo.push_back(cityTOdom * pose);
+  return PoseTrajectory(sweeps, std::move(cityTEgo), given.file);
 }
 
 }  // namespace hdprior

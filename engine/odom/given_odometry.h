@@ -1,5 +1,7 @@
 #pragma once
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -7,6 +9,8 @@
 #include "engine/io/trajectory_file.h"
 
 namespace hdprior {
+
+class ArgoverseLog;
 
 // Where a given trajectory's poses are: `first` (the default): in the system's own frame, whatever
 // it is; the pose at the first sweep is mapped onto the first ground-truth pose, as the built-in
@@ -41,5 +45,22 @@ constexpr int64_t kGivenOdometryToleranceNs = 1'000'000;
 // file when the sweeps are not covered (more than the tolerance before its first pose or after its last).
 PoseTrajectory givenOdometryAtSweeps(const GivenOdometry& given, const std::vector<int64_t>& sweepTimestampsNs,
                                      const SE3& cityTOdom);
+
+// How to read a trajectory file given as the odometry (run --odometry-format / --odometry-frame /
+// --odometry-times, the app's Pipeline tab).
+struct OdometryFileOptions {
+  std::optional<TrajectoryFormat> format;  // nullopt: detected (trajectory_file.h)
+  GivenOdometryFrame frame = GivenOdometryFrame::First;
+  std::optional<std::filesystem::path> times;
+};
+
+// The trajectory `file` read as the log's odometry.
+GivenOdometry givenOdometryOf(const std::filesystem::path& file, const OdometryFileOptions& options, const ArgoverseLog& log);
+
+// The given trajectory at every sweep of the log in the city frame, anchored as a Session anchors it
+// (at the ground-truth pose of the first sweep): the odometry trajectory a run over it reports
+// (before any injected drift). Throws Error naming the file when it does not cover the sweeps, or
+// the log when its poses do not cover the first sweep.
+PoseTrajectory givenOdometryInCity(const GivenOdometry& given, const ArgoverseLog& log);
 
 }  // namespace hdprior

@@ -35,6 +35,8 @@ class Session {
   const ArgoverseLog& log() const { return log_; }
   const Config& config() const { return config_; }
   bool hasPriors() const { return priors_ != nullptr; }
+  // The trajectory file the odometry takes its poses from; nullopt: the built-in lidar odometry.
+  const std::optional<GivenOdometry>& givenOdometry() const { return givenOdometry_; }
   size_t sweepCount() const;
   size_t sweepsDone() const { return nextSweep_; }  // skipped ones included
   bool done() const { return sweepsDone() == sweepCount(); }

@@ -11,9 +11,37 @@
 
 namespace hdprior::render {
 
-EstimatedTrajectoryLayer::EstimatedTrajectoryLayer(Which which)
-    : which_(which),
-      color_(which == Which::Odometry ? Eigen::Vector4f(1.0f, 0.45f, 0.15f, 1.0f) : Eigen::Vector4f(0.25f, 0.55f, 1.0f, 1.0f)) {}
+namespace {
+
+struct Kind {
+  const char* name;
+  const char* scaleLabel;
+  Eigen::Vector4f color;
+};
+
+const Kind& kind(EstimatedTrajectoryLayer::Which which) {
+  using L = EstimatedTrajectoryLayer;
+  static const Kind kinds[] = {{L::kOdometryName, "odometry ATE", {1.0f, 0.45f, 0.15f, 1.0f}},
+                               {L::kOptimizedName, "optimised ATE", {0.25f, 0.55f, 1.0f, 1.0f}},
+                               {L::kFileName, "file ATE", {0.9f, 0.3f, 0.9f, 1.0f}}};
+  return kinds[int(which)];
+}
+
+}  // namespace
+
+EstimatedTrajectoryLayer::EstimatedTrajectoryLayer(Which which) : which_(which), color_(kind(which).color) {}
+
+std::string EstimatedTrajectoryLayer::name() const { return kind(which_).name; }
+
+const PoseTrajectory& EstimatedTrajectoryLayer::trajectory() const {
+  return which_ == Which::Odometry ? analysis_->odometry : which_ == Which::Optimized ? analysis_->optimized : analysis_->file;
+}
+
+const std::vector<double>& EstimatedTrajectoryLayer::errors() const {
+  return which_ == Which::Odometry    ? analysis_->odometryError
+         : which_ == Which::Optimized ? analysis_->optimizedError
+                                      : analysis_->fileError;
+}
 
 void EstimatedTrajectoryLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
   analysis_ = &analysis;
@@ -24,9 +52,8 @@ void EstimatedTrajectoryLayer::build(const Scene& scene) {
   if (!line_) line_ = std::make_unique<GpuMesh>();
   std::vector<ColoredVertex> vertices;
   if (analysis_) {
-    const bool odometry = which_ == Which::Odometry;
-    const PoseTrajectory& trajectory = odometry ? analysis_->odometry : analysis_->optimized;
-    const std::vector<double>& errors = odometry ? analysis_->odometryError : analysis_->optimizedError;
+    const PoseTrajectory& trajectory = this->trajectory();
+    const std::vector<double>& errors = this->errors();
     double top = errorMax_;
     if (!(top > 0)) {
       for (double e : errors)
@@ -55,7 +82,7 @@ void EstimatedTrajectoryLayer::draw(const DrawContext& context) const {
 
 std::optional<ColourScale> EstimatedTrajectoryLayer::colourScale() const {
   if (!byError_ || !line_ || line_->size() == 0) return std::nullopt;
-  return ColourScale{which_ == Which::Odometry ? "odometry ATE" : "optimised ATE", 0.0, top_, "m", false, turbo};
+  return ColourScale{kind(which_).scaleLabel, 0.0, top_, "m", false, turbo};
 }
 
 std::vector<LayerOption> EstimatedTrajectoryLayer::options() {

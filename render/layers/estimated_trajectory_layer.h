@@ -1,21 +1,24 @@
 #pragma once
 #include <memory>
+#include <vector>
 
+#include "engine/geom/pose_trajectory.h"
 #include "render/gpu_mesh.h"
 #include "render/layer.h"
 
 namespace hdprior::render {
 
-// The odometry's or the optimised trajectory of the analysis (the ground truth is TrajectoryLayer)
-// as a line strip with pose dots, in its own colour or coloured by its per-pose ATE (Turbo from
+// The odometry's, the optimised or an opened trajectory file's trajectory of the analysis (the
+// ground truth is TrajectoryLayer) as a line strip with pose dots, in its own colour or coloured by its per-pose ATE (Turbo from
 // 0 to the largest error, or to a fixed maximum).
 class EstimatedTrajectoryLayer : public Layer {
  public:
-  enum class Which { Odometry, Optimized };
+  enum class Which { Odometry, Optimized, File };
   static constexpr const char* kOdometryName = "odometry_trajectory";
   static constexpr const char* kOptimizedName = "optimized_trajectory";
+  static constexpr const char* kFileName = "file_trajectory";
   explicit EstimatedTrajectoryLayer(Which which);
-  std::string name() const override { return which_ == Which::Odometry ? kOdometryName : kOptimizedName; }
+  std::string name() const override;
   void setFrame(const Scene& scene, const Frame& frame) override { build(scene); }
   void setAnalysis(const Scene& scene, const Analysis& analysis) override;
   void draw(const DrawContext& context) const override;
@@ -24,6 +27,8 @@ class EstimatedTrajectoryLayer : public Layer {
 
  private:
   void build(const Scene& scene);
+  const PoseTrajectory& trajectory() const;
+  const std::vector<double>& errors() const;
 
   Which which_;
   const Analysis* analysis_ = nullptr;

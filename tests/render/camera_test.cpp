@@ -56,7 +56,7 @@ TEST(SnapshotOptions, ParsesSizesViewsAndLayers) {
   EXPECT_EQ(render::defaultLayers(render::View::Landscape),
             (std::vector<std::string>{"drivable", "landscape", "boundary", "road_points", "match"}));
   // The analysis layers need the pipeline; the map's layers (and the NDT cells) do not.
-  for (const char* name : {"landscape", "odometry_trajectory", "optimized_trajectory", "keyframes", "road_points", "match"})
+  for (const char* name : {"landscape", "odometry_trajectory", "optimized_trajectory", "file_trajectory", "keyframes", "road_points", "match"})
     EXPECT_TRUE(render::needsAnalysis(name)) << name;
   for (const char* name : {"ground", "ndt_cells", "trajectory", "sweep"}) EXPECT_FALSE(render::needsAnalysis(name)) << name;
   // Drawing order, not the order given.

@@ -46,6 +46,24 @@ TEST(SnapshotCommand, DrawsTheLandscapeViewOfAKeyframe) {
   EXPECT_EQ(checkGolden(readPng(out), "real_landscape_view"), "");
 }
 
+// A trajectory file as the odometry (`run --odometry`'s options): the run inside the command goes over
+// it, and the file_trajectory layer draws it in its magenta.
+TEST(SnapshotCommand, DrawsAnOdometryFileAsItsLayer) {
+  const SimulatedDrive drive = simulatedTownDrive("snapshot_command_odometry_file", 1, 1, 2.0);  // 20 sweeps, about 16 m
+  const fs::path file = writeMovedTruth(drive.log, drive.folder / "given.tum", 0.0, 2.0, 0.0), out = drive.folder / "file.png";
+  const CommandResult r = runHdprior("snapshot " + quoted(drive.log) + " --frame 0 --size 640x360 --layers drivable,file_trajectory "
+                                     "--odometry " + quoted(file) + " --odometry-frame city --out " + quoted(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = readPng(out);
+  size_t magenta = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.pixel(x, y);
+      if (p[0] > 180 && p[2] > 180 && p[1] < 140) ++magenta;
+    }
+  EXPECT_GT(magenta, 40u);  // a 16 m line at 4.75 px/m
+}
+
 struct BadInput {
   const char* name;
   std::string args;  // after LOG; --out is added
@@ -76,7 +94,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"unknown_view", "--frame 0 --view side", "--view"},
                       BadInput{"keyframe_out_of_range", "--keyframe 5", "out of range"},
                       BadInput{"negative_keyframe", "--keyframe -2", "negative"},
-                      BadInput{"landscape_without_keyframe", "--frame 0 --view landscape", "--keyframe"}),
+                      BadInput{"landscape_without_keyframe", "--frame 0 --view landscape", "--keyframe"},
+                      BadInput{"missing_odometry_file", "--frame 0 --odometry /nonexistent/given.tum", "given.tum"},
+                      BadInput{"odometry_frame_alone", "--frame 0 --odometry-frame city", "needs --odometry"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SnapshotCommand, UnwritableOutputFails) {

@@ -38,6 +38,7 @@ render::Analysis fullAnalysis() {
   render::Analysis analysis;
   analysis.odometry = onePose();
   analysis.optimized = onePose();
+  analysis.file = onePose();
   analysis.keyframes.push_back({});
   analysis.inspection.emplace();
   analysis.landscape.emplace();
@@ -74,6 +75,18 @@ TEST(LayerVisibility, ShowsAnAnalysisLayerWhenItsDataFirstArrives) {
     }
   }
   EXPECT_FALSE(named(layers, "accumulated").visible);  // extras stay as they were
+}
+
+// Opening a trajectory file shows its layer at once, before any run.
+TEST(LayerVisibility, ShowsTheFileTrajectoryWhenAFileIsOpened) {
+  const auto layers = allLayers();
+  ui::LayerVisibility visibility;
+  visibility.reset(layers);
+  render::Analysis opened;
+  opened.file = onePose();
+  visibility.analysisArrived(layers, opened);
+  EXPECT_TRUE(named(layers, "file_trajectory").visible);
+  EXPECT_FALSE(named(layers, "odometry_trajectory").visible);
 }
 
 TEST(LayerVisibility, ArrivingDataNeverOverridesTheUser) {

@@ -33,10 +33,13 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does.
+// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does. The X authority file is
+// the test's own (-f): xvfb-run then has no temporary folder to remove, whose removal sometimes fails
+// under load and turns the command's exit status into 5.
 CommandResult runWithDisplay(const std::string& args, const fs::path& dir, const std::string& env = "") {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = env + " xvfb-run -a -s '-screen 0 1280x800x24' '" + std::string(HDPRIOR_BINARY) + "' " + args +
+  const std::string cmd = env + " xvfb-run -a -f " + quoted(dir / "Xauthority") + " -s '-screen 0 1280x800x24' '" +
+                          std::string(HDPRIOR_BINARY) + "' " + args +
                           " >" + quoted(out) + " 2>" + quoted(err);
   const int raw = std::system(cmd.c_str());
   CommandResult r;
@@ -181,6 +184,78 @@ TEST(ViewCommand, BenchRunsTheMatchAndTheOptimisationOfItsPanels) {
   }
 }
 
+// Pixels of the file trajectory's magenta (the layer, and the ATE plot's line) in a region.
+size_t magentaPixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  size_t n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const uint8_t* p = image.pixel(x, y);
+      if (p[0] > 180 && p[2] > 180 && p[1] < 140) ++n;
+    }
+  return n;
+}
+
+// Top-down with what would cover the file's two poses (at the ego) hidden.
+const std::string kOnlyTheFileLayer =
+    "view top\nlayer ego off\nlayer sweep off\nlayer keyframes off\nlayer odometry_trajectory off\nlayer optimized_trajectory off\n";
+
+// Issue 17 in the app: open a trajectory file (the log's truth moved 0.3 m, in the city frame), see
+// it as its layer and in the ATE plot, run the pipeline over it from the Pipeline tab, and get what
+// `hdprior run --odometry` gets; then the same run with the built-in odometry beside the file.
+TEST(ViewCommand, RunsThePipelineOverAnOpenedTrajectoryFile) {
+  const fs::path dir = freshOutputDir("view_odometry_file");
+  const fs::path file = writeMovedTruth(sharedLog(), dir / "given.tum", 0.3, -0.2, 0.0);
+  const fs::path opened = dir / "opened.png", ran = dir / "ran.png";
+  writeText(dir / "script.txt", "wait 2\nodometry " + file.string() + " tum city\nreport\n" + kOnlyTheFileLayer + "wait 2\nscreenshot " + opened.string() +
+                                    "\nrun\nreport\n" + kOnlyTheFileLayer + "wait 2\nscreenshot " + ran.string() + "\nuse-odometry builtin\nrun\nreport\n");
+  const CommandResult r = runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt"), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Opened: its layer and its own line in the plot, before any run.
+  EXPECT_NE(r.out.find("bench: no session\nodometry file: " + file.string() + " (tum, frame city, 2 poses) used by the next run, "
+                       "ate rmse 0.3606\nate plot: [file given.tum]\n"),
+            std::string::npos) << r.out;
+  // Run over it: the session's odometry is the file, and the plot shows it beside the optimised one.
+  EXPECT_NE(r.out.find("odometry: file " + file.string() + " (tum, frame city)\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ate plot: [odometry (file given.tum)] [optimised]\n"), std::string::npos) << r.out;
+  // With the checkbox off the run is the built-in odometry's, and the file keeps its own line.
+  EXPECT_NE(r.out.find("odometry: built-in lidar odometry\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("ate plot: [file given.tum] [odometry (built-in)] [optimised]\n"), std::string::npos) << r.out;
+
+  // The same numbers as the CLI's run over the file.
+  const CommandResult cli =
+      runHdprior("run " + quoted(sharedLog()) + " --out " + quoted(dir / "cli") + " --odometry " + quoted(file) + " --odometry-frame city");
+  ASSERT_EQ(cli.status, 0) << cli.err;
+  const std::string metrics = slurp(dir / "cli" / "metrics.json");
+  const auto rmseOf = [&](const std::string& section) {
+    const size_t at = metrics.find("\"rmse\":", metrics.find("\"ate_translation_m\"", metrics.find("\"" + section + "\": {")));
+    return std::strtod(metrics.c_str() + at + 7, nullptr);
+  };
+  const std::vector<double> ate = numbersAfter(r.out.substr(r.out.find("odometry: file")), "ate rmse: odometry ", 1);
+  const std::vector<double> optimized = numbersAfter(r.out.substr(r.out.find("odometry: file")), " optimized ", 1);
+  ASSERT_EQ(ate.size(), 1u);
+  ASSERT_EQ(optimized.size(), 1u);
+  EXPECT_NEAR(ate[0], rmseOf("odometry"), 1e-4) << metrics;
+  EXPECT_NEAR(optimized[0], rmseOf("optimized"), 1e-4) << metrics;
+
+  // The window: the file's trajectory in its magenta in the 3-D view and in the plot.
+  for (const fs::path& shot : {opened, ran}) {
+    const render::Image image = readPng(shot);
+    EXPECT_GT(magentaPixels(image, 300, 0, image.width - 360, image.height - 260), 10u) << shot << ": no file trajectory layer";
+    EXPECT_GT(magentaPixels(image, 300, image.height - 250, image.width - 360, image.height - 80), 10u) << shot << ": no file line in the plot";
+  }
+}
+
+// A bad trajectory file opened by a script stops it with the one line naming the file and the line.
+TEST(ViewCommand, ScriptStopsAtABadTrajectoryFile) {
+  const fs::path dir = freshOutputDir("view_odometry_file_bad");
+  writeText(dir / "bad.tum", "# poses\n315966265.2 1 2 3\n");
+  writeText(dir / "script.txt", "wait 1\nodometry " + (dir / "bad.tum").string() + "\nrun\n");
+  const CommandResult r = runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt"), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("bad.tum:2: expected 8 fields"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 TEST(ViewCommand, FramesAndExitTakesAScreenshot) {
   const fs::path dir = freshOutputDir("view_frames");
   const fs::path shot = dir / "shot.png";
@@ -264,6 +339,8 @@ TEST_P(ViewCommandBadInput, FailsWithOneLine) {
   const fs::path dir = freshOutputDir(std::string("view_bad_") + GetParam().name);
   writeText(dir / "bad_script.txt", "wait 1\nfly away\n");
   writeText(dir / "bad_config.json", "{\"match\": {\"outlier_ratio\": 7}}");
+  writeText(dir / "bad.tum", "# poses\n315966265.2 1 2 3\n");
+  writeText(dir / "early.tum", "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n");
   std::string args = GetParam().args;
   for (const auto& [key, value] : {std::pair<std::string, std::string>{"LOG", quoted(sharedLog())},
                                    {"DIR", dir.string()}}) {
@@ -286,7 +363,13 @@ INSTANTIATE_TEST_SUITE_P(
                                    "folder does not exist"},
                       BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"},
                       BadViewInput{"missing_config", "LOG --frames 1 --exit --config DIR/none.json", "none.json"},
-                      BadViewInput{"bad_config", "LOG --frames 1 --exit --config DIR/bad_config.json", "outlier_ratio"}),
+                      BadViewInput{"bad_config", "LOG --frames 1 --exit --config DIR/bad_config.json", "outlier_ratio"},
+                      BadViewInput{"bad_odometry", "LOG --frames 1 --exit --odometry DIR/bad.tum", "bad.tum:2: expected 8 fields"},
+                      BadViewInput{"missing_odometry", "LOG --frames 1 --exit --odometry DIR/none.tum", "none.tum"},
+                      BadViewInput{"uncovered_odometry", "LOG --frames 1 --exit --odometry DIR/early.tum", "must cover every sweep"},
+                      BadViewInput{"odometry_frame", "LOG --frames 1 --exit --odometry DIR/early.tum --odometry-frame up",
+                                   "first or city"},
+                      BadViewInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Without an X server the window cannot open: one line naming GLFW, never a crash.

@@ -29,6 +29,15 @@ TEST(ViewScript, ParsesTheBenchCommands) {
   EXPECT_EQ(commands[6].args, std::vector<std::string>{"PGO"});
 }
 
+TEST(ViewScript, ParsesTheOdometryFileCommands) {
+  const auto commands =
+      ui::parseViewScript("odometry a.tum\nodometry b.txt kitti\nodometry c.txt tum city\nuse-odometry builtin\n", "s.txt");
+  ASSERT_EQ(commands.size(), 4u);
+  EXPECT_EQ(commands[0].args, std::vector<std::string>{"a.tum"});
+  EXPECT_EQ(commands[2].args, (std::vector<std::string>{"c.txt", "tum", "city"}));
+  EXPECT_EQ(commands[3].args, std::vector<std::string>{"builtin"});
+}
+
 TEST(ViewScript, RejectsBadLinesNamingTheLine) {
   const std::pair<const char*, const char*> bad[] = {
       {"frame 0\nfly away\n", "line 2: unknown command 'fly'"},
@@ -45,6 +54,11 @@ TEST(ViewScript, RejectsBadLinesNamingTheLine) {
       {"offset 1 x 2\n", "three numbers"},
       {"offset 1 2\n", "takes 3"},
       {"tab Plots\n", "Pipeline, NDT, PGO, Keyframe or Export"},
+      {"odometry\n", "takes 1 to 3"},
+      {"odometry a.tum tum first x\n", "takes 1 to 3"},
+      {"odometry a.tum csv\n", "auto, tum or kitti"},
+      {"odometry a.tum tum map\n", "first or city"},
+      {"use-odometry maybe\n", "file or builtin"},
   };
   for (const auto& [text, message] : bad) {
     try {

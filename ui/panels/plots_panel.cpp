@@ -7,13 +7,21 @@
 #include <vector>
 
 #include "ui/app_state.h"
+#include "ui/ate_series.h"
 #include "ui/panels/panel_layout.h"
 
 namespace hdprior::ui {
 namespace {
 
-constexpr ImU32 kOdometryColor = IM_COL32(255, 150, 60, 255);
-constexpr ImU32 kOptimizedColor = IM_COL32(80, 200, 255, 255);
+// The colours of the trajectory layers (file, odometry, optimised), lightened for the dark panel.
+ImU32 seriesColor(AteSeries::Kind kind) {
+  switch (kind) {
+    case AteSeries::Kind::File: return IM_COL32(235, 110, 235, 255);
+    case AteSeries::Kind::Odometry: return IM_COL32(255, 150, 60, 255);
+    case AteSeries::Kind::Optimized: break;
+  }
+  return IM_COL32(80, 200, 255, 255);
+}
 
 struct PlotArea {
   ImVec2 min, max;
@@ -26,10 +34,10 @@ struct PlotArea {
   }
 };
 
-void drawSeries(ImDrawList* draw, const PlotArea& area, const std::vector<double>& errors, ImU32 color) {
+void drawSeries(ImDrawList* draw, const PlotArea& area, const std::vector<double>& errors, ImU32 color, float thickness) {
   std::vector<ImVec2> line;
   const auto flush = [&] {
-    if (line.size() > 1) draw->AddPolyline(line.data(), int(line.size()), color, 0, 1.5f);
+    if (line.size() > 1) draw->AddPolyline(line.data(), int(line.size()), color, 0, thickness);
     line.clear();
   };
   for (size_t i = 0; i < errors.size(); ++i) {
@@ -69,28 +77,30 @@ void drawPlotsPanel(AppState& state) {
                           ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, kPlotsHeight), ImGuiCond_Always);
   ImGui::Begin("ATE per frame", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-  if (a.odometryError.empty()) {
-    ImGui::TextDisabled("run the pipeline to see the error of every frame");
+  const std::vector<AteSeries> series = ateSeries(a);
+  if (series.empty()) {
+    ImGui::TextDisabled("run the pipeline (or open a trajectory file in the Pipeline tab) to see the error of every frame");
     ImGui::End();
     return;
   }
-  ImGui::TextColored(ImColor(kOdometryColor), "odometry");
-  ImGui::SameLine();
-  ImGui::TextColored(ImColor(kOptimizedColor), "optimised");
-  ImGui::SameLine();
+  for (const AteSeries& s : series) {
+    ImGui::TextColored(ImColor(seriesColor(s.kind)), "%s", s.label.c_str());
+    ImGui::SameLine();
+  }
   ImGui::TextDisabled("(translation error, m; click to go to a frame)");
   const ImVec2 origin = ImGui::GetCursorScreenPos(), avail = ImGui::GetContentRegionAvail();
   PlotArea area{ImVec2(origin.x + 48, origin.y + 4), ImVec2(origin.x + avail.x - 6, origin.y + avail.y - 4)};
   area.frames = state.frameCount();
   double maxError = 0.0;
-  for (const auto* series : {&a.odometryError, &a.optimizedError})
-    for (double e : *series)
+  for (const AteSeries& s : series)
+    for (double e : *s.errors)
       if (std::isfinite(e)) maxError = std::max(maxError, e);
   area.maxError = niceCeiling(maxError);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   drawAxes(draw, area);
-  drawSeries(draw, area, a.odometryError, kOdometryColor);
-  drawSeries(draw, area, a.optimizedError, kOptimizedColor);
+  // Earlier lines wider: where two coincide (an optimisation that changed little) both stay visible.
+  for (size_t i = 0; i < series.size(); ++i)
+    drawSeries(draw, area, *series[i].errors, seriesColor(series[i].kind), 1.5f + 1.0f * float(series.size() - 1 - i));
   const ImVec2 cursor = area.at(state.frame().index, 0.0);
   draw->AddLine(ImVec2(cursor.x, area.min.y), ImVec2(cursor.x, area.max.y), IM_COL32(255, 255, 255, 200), 1.0f);
 

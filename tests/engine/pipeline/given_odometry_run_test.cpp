@@ -6,8 +6,11 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "engine/io/argoverse_log.h"
 #include "engine/io/kitti_trajectory.h"
 #include "engine/io/tum_trajectory.h"
+#include "engine/odom/given_odometry.h"
+#include "engine/pipeline/session.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -226,6 +229,31 @@ TEST(GivenOdometryBadInput, EachIsOneLineExit2AndWritesNothing) {
   // The good file runs.
   const auto r = test::runHdprior("run " + log + " --out " + (dir / "ok").string() + " --no-prior --odometry " + good);
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace hdprior
+
+namespace hdprior {
+
+// What the app draws of an opened file before any run (givenOdometryInCity) is the odometry
+// trajectory a Session over the file then reports, in either frame.
+TEST(GivenOdometryInCity, IsTheOdometryTrajectoryOfARunOverTheFile) {
+  const ArgoverseLog log(test::sharedLog());
+  const fs::path file = test::writeMovedTruth(test::sharedLog(), test::freshOutputDir("given_in_city") / "moved.tum", 0.3, -0.2, 0.1);
+  for (const GivenOdometryFrame frame : {GivenOdometryFrame::First, GivenOdometryFrame::City}) {
+    const GivenOdometry given = givenOdometryOf(file, {.format = std::nullopt, .frame = frame, .times = std::nullopt}, log);
+    const PoseTrajectory drawn = givenOdometryInCity(given, log);
+    Session session(log, nullptr, Config{}, {.priors = false, .givenOdometry = given});
+    session.run();
+    const PoseTrajectory reported = session.odometryTrajectory();
+    ASSERT_EQ(drawn.size(), reported.size());
+    for (size_t i = 0; i < drawn.size(); ++i) {
+      EXPECT_EQ(drawn.timestamps()[i], reported.timestamps()[i]);
+      EXPECT_LT((drawn.poses()[i].translation() - reported.poses()[i].translation()).norm(), 1e-9) << i;
+    }
+    const double offset = (drawn.poses()[0].translation() - log.cityTEgoAtSweeps().poses()[0].translation()).norm();
+    EXPECT_NEAR(offset, frame == GivenOdometryFrame::City ? std::sqrt(0.14) : 0.0, 1e-6);  // first: anchored on the truth
+  }
 }
 
 }  // namespace hdprior
