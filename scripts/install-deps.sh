@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libpcl-dev libceres-dev libgdal-dev gdal-bin
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev libstb-dev
   nlohmann-json3-dev liblz4-dev libzstd-dev
-  libgtest-dev libbenchmark-dev libboost-dev
+  libgtest-dev libbenchmark-dev libboost-dev libcli11-dev
   xvfb xauth clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge
 )
