@@ -27,5 +27,6 @@ Command addDemoCommand(CLI::App& hdprior);
 Command addEvalCommand(CLI::App& hdprior);
 Command addMergeCommand(CLI::App& hdprior);
 Command addDegradeTrajectoryCommand(CLI::App& hdprior);
+Command addConfigCommand(CLI::App& hdprior);
 
 }  // namespace hdprior::app

@@ -8,6 +8,8 @@
 
 namespace hdprior::app {
 
+void addLogArgument(CLI::App& command, std::string& log) { command.add_option("LOG", log, "the log's folder")->required(); }
+
 void addConfigOption(CLI::App& command, ConfigArguments& arguments) {
   command.add_option("--config", arguments.file, "the JSON configuration (default: the built-in one, `hdprior config --defaults`)")
       ->type_name("FILE");
@@ -23,7 +25,7 @@ void addOdometryDriftOption(CLI::App& command, ConfigArguments& arguments) {
 }
 
 Config configOf(const ConfigArguments& arguments) {
-  Config config = arguments.file.empty() ? Config{} : loadConfig(arguments.file);
+  Config config = arguments.file.empty() ? defaultConfig() : loadConfig(arguments.file);
   if (!arguments.odometryDrift.empty()) config.odometry.drift = parseOdometryDrift(arguments.odometryDrift, "option --odometry-drift");
   return config;
 }

@@ -14,6 +14,9 @@ class Option;
 
 namespace hdprior::app {
 
+// LOG, the required positional argument: an Argoverse 2 log's folder.
+void addLogArgument(CLI::App& command, std::string& log);
+
 // --config FILE (the one JSON configuration) and, for commands that add it, --odometry-drift
 // SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M], which replaces the file's odometry.drift.
 struct ConfigArguments {

@@ -45,7 +45,7 @@ void printRow(const char* name, const ErrorStats& s) {
 int runDemo(const DemoArguments& a) {
   const std::filesystem::path out = outputFolder(a.out);
   const ArgoverseLog log(demoLog(a, out));
-  const Config config;
+  const Config& config = defaultConfig();
   RunMetrics metrics;
   for (const bool priors : {false, true}) {
     ProgressBar bar(priors ? "with priors" : "odometry");

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
@@ -41,7 +42,7 @@ Command addExportMapCommand(CLI::App& hdprior) {
   CLI::App* command = hdprior.add_subcommand(
       "export-map", "write the HD-map rasters as GeoTIFFs in city metres: DIR/drivable.tif, ground_height.tif, boundary_distance.tif");
   auto a = std::make_shared<ExportMapArguments>();
-  command->add_option("LOG", a->log, "the log's folder")->required();
+  addLogArgument(*command, a->log);
   command->add_option("--out", a->out, "the output folder")->type_name("DIR")->required();
   command->add_option("--resolution", a->resolution, "the rasters' cell size in metres, 0.01 to 10")->type_name("M")->check(finiteNumber());
   return {command, [a] { return runExportMap(*a); }};

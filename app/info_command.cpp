@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/npy.h"
@@ -46,7 +47,7 @@ Command addInfoCommand(CLI::App& hdprior) {
   CLI::App* info = hdprior.add_subcommand("info", "summarise an Argoverse 2 log: id, city, sweeps, poses, map elements, "
                                                   "ground-height raster, the first sweep's points");
   auto log = std::make_shared<std::string>();
-  info->add_option("LOG", *log, "the log's folder")->required();
+  addLogArgument(*info, *log);
   return {info, [log] { return runInfo(*log); }};
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/error.h"
+#include "render/snapshot.h"
 
 namespace hdprior::app {
 
@@ -49,6 +50,13 @@ CLI::Validator parsedBy(std::function<void(const std::string&)> parse) {
         }
       },
       "");
+}
+
+CLI::Validator imageSize() {
+  return parsedBy([](const std::string& text) {
+    int width = 0, height = 0;
+    render::parseSize(text, width, height);
+  });
 }
 
 }  // namespace hdprior::app

@@ -17,6 +17,9 @@ CLI::Validator integerAtLeast(long long min);
 // A finite real number: "'x' is not a number".
 CLI::Validator finiteNumber();
 
+// An image size WIDTHxHEIGHT (render::parseSize).
+CLI::Validator imageSize();
+
 // Accepted when `parse` returns; the reason of the hdprior::Error it throws is the problem.
 CLI::Validator parsedBy(std::function<void(const std::string&)> parse);
 

@@ -74,7 +74,7 @@ Command addRunCommand(CLI::App& hdprior) {
       "run", "the pipeline over a whole log: lidar odometry, HD-map priors, pose graph, every sweep corrected; "
              "trajectories, keyframes, metrics and map into DIR");
   auto a = std::make_shared<RunArguments>();
-  command->add_option("LOG", a->log, "the log's folder")->required();
+  addLogArgument(*command, a->log);
   command->add_option("--out", a->out, "the output folder")->type_name("DIR")->required();
   command->add_flag("--no-prior", a->noPrior, "odometry only: no HD-map priors, no pose graph");
   addConfigOption(*command, a->config);

@@ -93,14 +93,11 @@ Command addSnapshotCommand(CLI::App& hdprior) {
       "snapshot", "one frame drawn headless (OSMesa, no X server) to PNG, with the view's overlay; analysis layers or "
                   "--keyframe run the pipeline (with priors) first");
   auto a = std::make_shared<SnapshotArguments>();
-  command->add_option("LOG", a->log, "the log's folder")->required();
+  addLogArgument(*command, a->log);
   addIndexOption(*command, "--frame", a->frame, "the sweep to draw (default with --keyframe: the keyframe's)")->type_name("N");
   addIndexOption(*command, "--keyframe", a->keyframe, "inspect keyframe K: re-match it and its cost landscape")->type_name("K");
   command->add_option("--out", a->out, "the PNG to write")->type_name("FILE.png")->required();
-  command->add_option("--size", a->size, "the image's size in pixels")->type_name("WxH")->check(parsedBy([](const std::string& text) {
-    int w = 0, h = 0;
-    render::parseSize(text, w, h);
-  }));
+  command->add_option("--size", a->size, "the image's size in pixels")->type_name("WxH")->check(imageSize());
   command->add_option("--view", a->view, "the camera; landscape and inspector need --keyframe")
       ->type_name("top|orbit|landscape|inspector")
       ->check(parsedBy([](const std::string& text) { render::parseView(text); }));

@@ -85,10 +85,7 @@ Command addViewCommand(CLI::App& hdprior) {
   command->add_option("--frames", a->frames, "take the screenshot after N frames")->type_name("N")->default_str("")->check(integerAtLeast(1));
   command->add_flag("--exit", a->exit, "quit after --frames N frames");
   command->add_option("--screenshot", a->screenshot, "the window's PNG, with --script or --frames")->type_name("FILE.png");
-  command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(parsedBy([](const std::string& text) {
-    int w = 0, h = 0;
-    render::parseSize(text, w, h);
-  }));
+  command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(imageSize());
   command->add_option("--config", a->config, "the configuration the tuning bench starts from (default: the built-in one)")->type_name("FILE");
   return {command, [a] { return runView(*a); }};
 }

@@ -26,7 +26,7 @@ struct ViewerOptions {
   int frames = 0;  // > 0: after this many frames with the log open (or without a log), screenshot and/or exit
   bool exitAfterFrames = false;
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
-  Config config;                                    // the tuning bench starts from it ...
+  Config config = defaultConfig();                  // the tuning bench starts from it ...
   std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
