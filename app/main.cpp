@@ -82,5 +82,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: %s (try %s --help)\n", name.c_str(), hdprior::app::parseErrorLine(e).c_str(), name.c_str());
     return 2;
   }
+  // Parsing succeeds only with a subcommand, and the subcommand came first (--help and --version
+  // end in CLI::Success above).
   return runCommand(*command);
 }
