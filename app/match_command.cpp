@@ -134,7 +134,7 @@ Command addMatchCommand(CLI::App& hdprior) {
       "match", "match sweep N's road points to the drivable area from the ground-truth pose moved by an offset; prints JSON");
   auto a = std::make_shared<MatchArguments>();
   addLogArgument(*command, a->log);
-  command->add_option("--frame", a->frame, "the sweep to match")->type_name("N")->required()->check(integerAtLeast(0));
+  command->add_option("--frame", a->frame, "the sweep to match")->type_name("N")->default_str("")->required()->check(integerAtLeast(0));
   command->add_option("--init", a->init, "the start: the ground-truth pose moved dx forward, dy left (metres) and dyaw degrees")
       ->type_name("dx,dy,dyaw_deg")
       ->check(parsedBy([](const std::string& text) { parseOffset(text); }));

@@ -82,7 +82,7 @@ Command addViewCommand(CLI::App& hdprior) {
   auto a = std::make_shared<ViewArguments>();
   command->add_option("LOG", a->log, "the log's folder (default: the simulator's demo log)");
   command->add_option("--script", a->script, "run a script, then take the screenshot and quit")->type_name("FILE");
-  command->add_option("--frames", a->frames, "take the screenshot after N frames")->type_name("N")->default_str("")->check(integerAtLeast(1));
+  command->add_option("--frames", a->frames, "take the screenshot after N frames (--exit alone: 1)")->type_name("N")->default_str("")->check(integerAtLeast(1));
   command->add_flag("--exit", a->exit, "quit after --frames N frames");
   command->add_option("--screenshot", a->screenshot, "the window's PNG, with --script or --frames")->type_name("FILE.png");
   command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(imageSize());
