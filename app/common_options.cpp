@@ -1,13 +1,32 @@
 #include "app/common_options.h"
 
+#include <CLI/CLI.hpp>
+
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/odom/odometry_drift.h"
 
 namespace hdprior::app {
 
-Config configOption(const CommandLine& cl) {
-  Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
-  if (const auto drift = cl.value("odometry-drift")) config.odometry.drift = parseOdometryDrift(*drift, "option --odometry-drift");
+void addLogArgument(CLI::App& command, std::string& log) { command.add_option("LOG", log, "the log's folder")->required(); }
+
+void addConfigOption(CLI::App& command, ConfigArguments& arguments) {
+  command.add_option("--config", arguments.file, "the JSON configuration (default: the built-in one, `hdprior config --defaults`)")
+      ->type_name("FILE");
+}
+
+void addOdometryDriftOption(CLI::App& command, ConfigArguments& arguments) {
+  command
+      .add_option("--odometry-drift", arguments.odometryDrift,
+                  "degrade the odometry's reported poses reproducibly: scale error, yaw and pitch drift in degrees per 100 m "
+                  "(replaces the configuration's odometry.drift)")
+      ->type_name("SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]")
+      ->check(parsedBy([](const std::string& text) { parseOdometryDrift(text, "option --odometry-drift"); }));
+}
+
+Config configOf(const ConfigArguments& arguments) {
+  Config config = arguments.file.empty() ? defaultConfig() : loadConfig(arguments.file);
+  if (!arguments.odometryDrift.empty()) config.odometry.drift = parseOdometryDrift(arguments.odometryDrift, "option --odometry-drift");
   return config;
 }
 
@@ -16,14 +35,26 @@ std::filesystem::path outputFolder(const std::filesystem::path& out) {
   return out;
 }
 
-OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string& sourceOption) {
+void addOdometryFileOptions(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source) {
+  command.add_option("--odometry-format", arguments.format, "the trajectory file's format (default: detected from its lines)")
+      ->type_name("tum|kitti")
+      ->check(parsedBy([](const std::string& text) { parseTrajectoryFormat(text, "option --odometry-format"); }))
+      ->needs(source);
+  command.add_option("--odometry-frame", arguments.frame, "the frame of the file's poses: the first pose's, or the city's")
+      ->type_name("first|city")
+      ->check(parsedBy([](const std::string& text) { parseGivenOdometryFrame(text, "option --odometry-frame"); }))
+      ->needs(source);
+}
+
+void addOdometryTimesOption(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source) {
+  command.add_option("--odometry-times", arguments.times, "a KITTI file's timestamps, one a line")->type_name("FILE")->needs(source);
+}
+
+OdometryFileOptions odometryFileOptions(const OdometryFileArguments& arguments) {
   OdometryFileOptions o;
-  for (const char* name : {"odometry-format", "odometry-frame", "odometry-times"}) {
-    if (cl.has(name) && !cl.has(sourceOption)) throw Error(std::string("option --") + name, "needs --" + sourceOption);
-  }
-  if (const auto f = cl.value("odometry-format")) o.format = parseTrajectoryFormat(*f, "option --odometry-format");
-  if (const auto f = cl.value("odometry-frame")) o.frame = parseGivenOdometryFrame(*f, "option --odometry-frame");
-  if (const auto t = cl.value("odometry-times")) o.times = *t;
+  if (!arguments.format.empty()) o.format = parseTrajectoryFormat(arguments.format, "option --odometry-format");
+  o.frame = parseGivenOdometryFrame(arguments.frame, "option --odometry-frame");
+  if (!arguments.times.empty()) o.times = arguments.times;
   return o;
 }
 

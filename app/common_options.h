@@ -1,26 +1,44 @@
 #pragma once
 #include <filesystem>
 #include <optional>
+#include <string>
 
-#include "app/command_line.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
 namespace hdprior::app {
 
-// --config FILE (the one JSON configuration), or the defaults without it; then
-// --odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M] (for commands that accept it) replaces
-// the file's odometry.drift.
-Config configOption(const CommandLine& cl);
+// LOG, the required positional argument: an Argoverse 2 log's folder.
+void addLogArgument(CLI::App& command, std::string& log);
+
+// --config FILE (the one JSON configuration) and, for commands that add it, --odometry-drift
+// SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M], which replaces the file's odometry.drift.
+struct ConfigArguments {
+  std::string file;
+  std::string odometryDrift;
+};
+void addConfigOption(CLI::App& command, ConfigArguments& arguments);
+void addOdometryDriftOption(CLI::App& command, ConfigArguments& arguments);
+// The file's configuration (the defaults without one) with the drift option applied.
+Config configOf(const ConfigArguments& arguments);
 
 // An output folder: returned as given when it does not exist yet or is a folder; throws otherwise.
 std::filesystem::path outputFolder(const std::filesystem::path& out);
 
 // How to read a trajectory file given as the odometry: --odometry-format tum|kitti (default: detected,
-// trajectory_file.h), --odometry-frame first|city (default first) and, for commands that accept
-// it, --odometry-times FILE. Throws Error naming the option for an unknown value, or when they come
-// without `sourceOption` (--odometry, --odometry-dir).
-OdometryFileOptions odometryFileOptions(const CommandLine& cl, const std::string& sourceOption);
+// trajectory_file.h), --odometry-frame first|city (default first) and, for commands that add it,
+// --odometry-times FILE. Each needs the option `source` (--odometry, --odometry-dir).
+struct OdometryFileArguments {
+  std::string format, frame = "first", times;
+};
+void addOdometryFileOptions(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source);
+void addOdometryTimesOption(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source);
+OdometryFileOptions odometryFileOptions(const OdometryFileArguments& arguments);
 
 }  // namespace hdprior::app

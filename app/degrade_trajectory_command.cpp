@@ -1,8 +1,10 @@
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
-#include "app/command_line.h"
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
@@ -23,22 +25,20 @@ PoseTrajectory sourceTrajectory(const fs::path& in) {
   return ArgoverseLog(in).cityTEgoAtSweeps();
 }
 
-}  // namespace
+struct DegradeArguments {
+  std::string in, out, drift, randomWalk, format;
+  long long seed = 1;
+};
 
-int runDegradeTrajectory(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "drift", "random-walk", "seed", "format"}, .flags = {}, .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior degrade-trajectory (LOG | FILE.tum) --out FILE [--drift SCALE,YAW_DEG_PER_100M"
-                                       "[,PITCH_DEG_PER_100M]] [--random-walk SIGMA_M,SIGMA_DEG] [--seed N] [--format tum|kitti]"});
-  const fs::path out = cl.required("out");
-  const OdometryDrift drift = cl.value("drift") ? parseOdometryDrift(*cl.value("drift"), "option --drift") : OdometryDrift{};
-  RandomWalk walk = cl.value("random-walk") ? parseRandomWalk(*cl.value("random-walk"), "option --random-walk") : RandomWalk{};
-  const long long seed = cl.integer("seed", 1);
-  if (seed < 0) throw Error("option --seed", "must not be negative");
-  walk.seed = uint64_t(seed);
-  const TrajectoryFormat format = cl.value("format")              ? parseTrajectoryFormat(*cl.value("format"), "option --format")
+int runDegradeTrajectory(const DegradeArguments& a) {
+  const fs::path out = a.out;
+  const OdometryDrift drift = a.drift.empty() ? OdometryDrift{} : parseOdometryDrift(a.drift, "option --drift");
+  RandomWalk walk = a.randomWalk.empty() ? RandomWalk{} : parseRandomWalk(a.randomWalk, "option --random-walk");
+  walk.seed = uint64_t(a.seed);
+  const TrajectoryFormat format = !a.format.empty()              ? parseTrajectoryFormat(a.format, "option --format")
                                   : out.extension() == ".kitti" ? TrajectoryFormat::Kitti
                                                                   : TrajectoryFormat::Tum;
-  const PoseTrajectory source = sourceTrajectory(cl.positional()[0]);
+  const PoseTrajectory source = sourceTrajectory(a.in);
   const std::vector<SE3> degraded = degradedPoses(source.poses(), drift, walk);
   if (format == TrajectoryFormat::Kitti) writeFileAtomically(out, formatKitti(degraded));
   else writeTum(out, PoseTrajectory(source.timestamps(), degraded, out.string()));
@@ -47,6 +47,28 @@ int runDegradeTrajectory(const std::vector<std::string>& args) {
               out.string().c_str(), degraded.size(), trajectoryFormatName(format), drift.scale, drift.yawDegPer100m,
               drift.pitchDegPer100m, walk.translationSigma, walk.rotationSigmaDeg, (unsigned long long)walk.seed);
   return 0;
+}
+
+}  // namespace
+
+Command addDegradeTrajectoryCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "degrade-trajectory", "a log's ground truth at every sweep (or a TUM file's poses) degraded as another system's odometry "
+                            "would be: drift, then a seeded random walk");
+  auto a = std::make_shared<DegradeArguments>();
+  command->add_option("SOURCE", a->in, "a log's folder or a TUM file")->type_name("LOG|FILE.tum")->required();
+  command->add_option("--out", a->out, "the trajectory file to write")->type_name("FILE")->required();
+  command->add_option("--drift", a->drift, "scale error, yaw and pitch drift in degrees per 100 m (default: none)")
+      ->type_name("SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]")
+      ->check(parsedBy([](const std::string& text) { parseOdometryDrift(text, "option --drift"); }));
+  command->add_option("--random-walk", a->randomWalk, "per axis sigma * sqrt(step length), metres and degrees per sqrt(metre) (default: none)")
+      ->type_name("SIGMA_M,SIGMA_DEG")
+      ->check(parsedBy([](const std::string& text) { parseRandomWalk(text, "option --random-walk"); }));
+  command->add_option("--seed", a->seed, "the random walk's seed")->type_name("N")->check(integerAtLeast(0));
+  command->add_option("--format", a->format, "the output's format (default: kitti for a .kitti file, else tum)")
+      ->type_name("tum|kitti")
+      ->check(parsedBy([](const std::string& text) { parseTrajectoryFormat(text, "option --format"); }));
+  return {command, [a] { return runDegradeTrajectory(*a); }};
 }
 
 }  // namespace hdprior::app

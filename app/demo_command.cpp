@@ -1,9 +1,11 @@
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/option_checks.h"
 #include "app/progress_bar.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
@@ -14,14 +16,21 @@
 namespace hdprior::app {
 namespace {
 
-std::filesystem::path demoLog(const CommandLine& cl, const std::filesystem::path& out) {
-  if (!cl.has("town") && !cl.has("seconds")) {
+struct DemoArguments {
+  std::string out = "hdprior-demo";
+  long long town = 1;
+  double seconds = 30.0;
+  bool simulate = false;  // --town or --seconds given: a fresh log instead of the cached one
+};
+
+std::filesystem::path demoLog(const DemoArguments& a, const std::filesystem::path& out) {
+  if (!a.simulate) {
     ProgressBar bar("demo log");
     return demoLogPath([&](size_t d, size_t t) { bar(d, t); });
   }
   SimulationOptions o;
-  o.townSeed = uint64_t(cl.integer("town", 1));
-  o.seconds = cl.number("seconds", 30.0);
+  o.townSeed = uint64_t(a.town);
+  o.seconds = a.seconds;
   if (!(o.seconds > 0) || o.seconds > 600) throw Error("option --seconds", "must be in (0, 600]");
   o.outDir = out / "logs";
   ProgressBar bar("sim");
@@ -33,14 +42,10 @@ void printRow(const char* name, const ErrorStats& s) {
   std::printf("| %-9s | %6.3f | %6.3f | %6.3f | %6.3f | %6.3f |\n", name, s.mean, s.median, s.rmse, s.std, s.max);
 }
 
-}  // namespace
-
-int runDemo(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "town", "seconds"}, .flags = {}, .minPositional = 0, .maxPositional = 0,
-                              .usage = "hdprior demo [--out DIR] [--town SEED --seconds N]"});
-  const std::filesystem::path out = outputFolder(cl.value("out").value_or("hdprior-demo"));
-  const ArgoverseLog log(demoLog(cl, out));
-  const Config config;
+int runDemo(const DemoArguments& a) {
+  const std::filesystem::path out = outputFolder(a.out);
+  const ArgoverseLog log(demoLog(a, out));
+  const Config& config = defaultConfig();
   RunMetrics metrics;
   for (const bool priors : {false, true}) {
     ProgressBar bar(priors ? "with priors" : "odometry");
@@ -61,6 +66,23 @@ int runDemo(const std::vector<std::string>& args) {
               "keyframes.json with every match, metrics.json, map.ply)\n",
               log.dir().string().c_str(), (out / "odometry").string().c_str(), (out / "priors").string().c_str());
   return 0;
+}
+
+}  // namespace
+
+Command addDemoCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "demo", "simulate a town log (or reuse the cached demo log), run it with and without priors and print the table of ATE");
+  auto a = std::make_shared<DemoArguments>();
+  command->add_option("--out", a->out, "the output folder")->type_name("DIR");
+  CLI::Option* town = command->add_option("--town", a->town, "simulate this town instead of using the cached demo log")
+                          ->type_name("SEED")
+                          ->check(integerAtLeast(0));
+  CLI::Option* seconds = command->add_option("--seconds", a->seconds, "the simulated drive's length, (0, 600] s")
+                             ->type_name("N")
+                             ->check(finiteNumber());
+  command->callback([a, town, seconds] { a->simulate = town->count() + seconds->count() > 0; });
+  return {command, [a] { return runDemo(*a); }};
 }
 
 }  // namespace hdprior::app

@@ -1,17 +1,19 @@
+#include <CLI/CLI.hpp>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "app/eval_logs.h"
 #include "app/eval_merge.h"
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/eval/eval_shard.h"
 #include "engine/eval/log_evaluation_file.h"
@@ -160,42 +162,63 @@ int reportShard(const Batch& batch, EvalShard shard, const fs::path& dir, const 
   return failed ? 2 : 0;
 }
 
-}  // namespace
+struct EvalArguments {
+  std::string dir, out, shard, odometryDir;
+  long long jobs = std::max(1u, std::thread::hardware_concurrency());
+  bool skipExisting = false, noPrior = false, keepTimeBudget = false;
+  ConfigArguments config;
+  OdometryFileArguments odometryFile;
+};
 
-int runEval(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "jobs", "shard", "odometry-drift", "odometry-dir", "odometry-format",
-                                         "odometry-frame"},
-                              .flags = {"no-prior", "keep-time-budget", "skip-existing"},
-                              .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior eval DIR --out OUTDIR [-j N] [--shard I/N] [--skip-existing] [--config FILE] [--no-prior] "
-                                       "[--keep-time-budget] [--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] "
-                                       "[--odometry-dir D [--odometry-format tum|kitti] [--odometry-frame first|city]]",
-                              .shortNames = {{'j', "jobs"}}});
+int runEval(const EvalArguments& a) {
   Batch batch;
-  batch.out = outputFolder(cl.required("out"));
-  const long long jobs = cl.integer("jobs", std::max(1u, std::thread::hardware_concurrency()));
-  if (jobs < 1) throw Error("option --jobs", "must be at least 1");
-  const std::optional<EvalShard> shard = cl.has("shard") ? std::optional(parseEvalShard(*cl.value("shard"))) : std::nullopt;
-  batch.skipExisting = cl.has("skip-existing");
-  batch.config = configOption(cl);
+  batch.out = outputFolder(a.out);
+  const std::optional<EvalShard> shard = a.shard.empty() ? std::nullopt : std::optional(parseEvalShard(a.shard));
+  batch.skipExisting = a.skipExisting;
+  batch.config = configOf(a.config);
   // The matcher's wall-clock budget rejects matches that run long on a loaded machine, which would
   // make a log's result depend on the number of workers and whatever else runs.
-  if (!cl.has("keep-time-budget")) batch.config.match.timeBudgetMs = kNoTimeBudgetMs;
-  batch.options.priors = !cl.has("no-prior");
-  batch.odometryFile = odometryFileOptions(cl, "odometry-dir");
-  if (const auto d = cl.value("odometry-dir")) {
-    if (!fs::is_directory(*d)) throw Error("option --odometry-dir", "'" + *d + "' is not a folder");
-    batch.odometryDir = *d;
+  if (!a.keepTimeBudget) batch.config.match.timeBudgetMs = kNoTimeBudgetMs;
+  batch.options.priors = !a.noPrior;
+  batch.odometryFile = odometryFileOptions(a.odometryFile);
+  if (!a.odometryDir.empty()) {
+    if (!fs::is_directory(a.odometryDir)) throw Error("option --odometry-dir", "'" + a.odometryDir + "' is not a folder");
+    batch.odometryDir = a.odometryDir;
   }
-  const fs::path dir = cl.positional()[0];
+  const fs::path dir = a.dir;
   const std::vector<fs::path> logs = evalLogs(dir);
   batch.logs = logsOfShard(logs, shard.value_or(EvalShard{}));
   fs::create_directories(batch.out);
 
   // A plain eval is the one shard of all the logs, then the merge.
-  const std::vector<LogEvaluation> results = evaluateLogs(batch, size_t(jobs));
+  const std::vector<LogEvaluation> results = evaluateLogs(batch, size_t(a.jobs));
   if (shard) return reportShard(batch, *shard, dir, results);
   return mergeEvaluation(batch.out, logs, "eval");
+}
+
+}  // namespace
+
+Command addEvalCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "eval", "every Argoverse 2 log under DIR (or shard I of N of them), N at a time, each as `run` does into OUTDIR/<log id>/, "
+              "then the paper's table over them (as `merge` does)");
+  auto a = std::make_shared<EvalArguments>();
+  command->add_option("DIR", a->dir, "the folder searched recursively for logs")->required();
+  command->add_option("--out", a->out, "the output folder")->type_name("OUTDIR")->required();
+  command->add_option("-j,--jobs", a->jobs, "logs run at a time (default: the number of cores)")->type_name("N")->check(integerAtLeast(1));
+  command->add_option("--shard", a->shard, "only the logs k with k mod N = I (0-based), and no merge: a task of a job array")
+      ->type_name("I/N")
+      ->check(parsedBy([](const std::string& text) { parseEvalShard(text); }));
+  command->add_flag("--skip-existing", a->skipExisting, "keep each log whose stored result says it went through");
+  addConfigOption(*command, a->config);
+  command->add_flag("--no-prior", a->noPrior, "odometry only: no HD-map priors, no pose graph");
+  command->add_flag("--keep-time-budget", a->keepTimeBudget,
+                    "keep the matcher's wall-clock budget (off by default: results would depend on the machine's load)");
+  addOdometryDriftOption(*command, a->config);
+  CLI::Option* odometryDir =
+      command->add_option("--odometry-dir", a->odometryDir, "each log's odometry from D/<log id>.tum or D/<log id>.txt")->type_name("D");
+  addOdometryFileOptions(*command, a->odometryFile, odometryDir);
+  return {command, [a] { return runEval(*a); }};
 }
 
 }  // namespace hdprior::app

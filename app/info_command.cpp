@@ -1,7 +1,9 @@
+#include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
 
-#include "app/command_line.h"
 #include "app/commands.h"
+#include "app/common_options.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/npy.h"
@@ -10,10 +12,10 @@
 
 namespace hdprior::app {
 
-int runInfo(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {}, .flags = {}, .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior info LOG"});
-  const ArgoverseLog log(cl.positional()[0]);
+namespace {
+
+int runInfo(const std::string& logDir) {
+  const ArgoverseLog log(logDir);
   const VectorMap map = readVectorMap(log.mapFiles().vectorMap);
   const NpyArray height = readNpy(log.mapFiles().groundHeight);
   const Sim2 sim2 = readSim2(log.mapFiles().sim2);
@@ -37,6 +39,16 @@ int runInfo(const std::vector<std::string>& args) {
   std::printf("ground height:     %zu rows x %zu cols, %.3f m cells\n", height.shape[0], height.shape[1], 1.0 / sim2.s);
   if (log.sweepCount() > 0) std::printf("first sweep:       %zu points\n", log.sweep(0)->points.size());
   return 0;
+}
+
+}  // namespace
+
+Command addInfoCommand(CLI::App& hdprior) {
+  CLI::App* info = hdprior.add_subcommand("info", "summarise an Argoverse 2 log: id, city, sweeps, poses, map elements, "
+                                                  "ground-height raster, the first sweep's points");
+  auto log = std::make_shared<std::string>();
+  addLogArgument(*info, *log);
+  return {info, [log] { return runInfo(*log); }};
 }
 
 }  // namespace hdprior::app

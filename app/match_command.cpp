@@ -1,12 +1,14 @@
+#include <CLI/CLI.hpp>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <numbers>
 #include <sstream>
 #include <string>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/eval/match_calibration.h"
 #include "engine/geom/se2.h"
@@ -64,23 +66,24 @@ std::string finiteOrNull(double v) {
   return b;
 }
 
-}  // namespace
+struct MatchArguments {
+  std::string log, init = "0,0,0", backend;
+  long long frame = 0;
+  double timeBudgetMs = MatchOptions{}.timeBudgetMs;
+  bool timeBudgetGiven = false;
+  ConfigArguments config;
+};
 
-int runMatch(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"frame", "init", "backend", "time-budget", "config"}, .flags = {}, .minPositional = 1,
-                              .maxPositional = 1,
-                              .usage = "hdprior match LOG --frame N [--init dx,dy,dyaw_deg] [--backend ndt2d|pcl] [--time-budget MS] [--config FILE]"});
-  if (!cl.has("frame")) throw Error("option --frame", "missing (the sweep to match)");
-  const long long frame = cl.integer("frame", -1);
-  if (frame < 0) throw Error("option --frame", "must not be negative");
-  const Eigen::Vector3d offset = parseOffset(cl.value("init").value_or("0,0,0"));
-  const Config config = configOption(cl);
+int runMatch(const MatchArguments& a) {
+  const long long frame = a.frame;
+  const Eigen::Vector3d offset = parseOffset(a.init);
+  const Config config = configOf(a.config);
   MatchOptions options = config.match;
-  if (cl.value("backend")) options.backend = parseBackend(*cl.value("backend"));
-  options.timeBudgetMs = cl.number("time-budget", options.timeBudgetMs);
-  if (!(options.timeBudgetMs > 0) || !std::isfinite(options.timeBudgetMs)) throw Error("option --time-budget", "must be a positive number of milliseconds");
+  if (!a.backend.empty()) options.backend = parseBackend(a.backend);
+  if (a.timeBudgetGiven) options.timeBudgetMs = a.timeBudgetMs;
+  if (!(options.timeBudgetMs > 0)) throw Error("option --time-budget", "must be a positive number of milliseconds");
 
-  const ArgoverseLog log(cl.positional()[0]);
+  const ArgoverseLog log(a.log);
   if (size_t(frame) >= log.sweepCount()) {
     throw Error("option --frame", "frame " + std::to_string(frame) + " is out of range (the log has " +
                                       std::to_string(log.sweepCount()) + " sweeps)");
@@ -122,6 +125,29 @@ int runMatch(const std::vector<std::string>& args) {
   std::printf("  \"covariance_x_y_yaw\": %s,\n  \"information_x_y_yaw\": %s\n}\n", matrix(r.covariance).c_str(),
               matrix(r.information).c_str());
   return 0;
+}
+
+}  // namespace
+
+Command addMatchCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "match", "match sweep N's road points to the drivable area from the ground-truth pose moved by an offset; prints JSON");
+  auto a = std::make_shared<MatchArguments>();
+  addLogArgument(*command, a->log);
+  command->add_option("--frame", a->frame, "the sweep to match")->type_name("N")->default_str("")->required()->check(integerAtLeast(0));
+  command->add_option("--init", a->init, "the start: the ground-truth pose moved dx forward, dy left (metres) and dyaw degrees")
+      ->type_name("dx,dy,dyaw_deg")
+      ->check(parsedBy([](const std::string& text) { parseOffset(text); }));
+  command->add_option("--backend", a->backend, "the matcher (default: the configuration's match.backend)")->type_name("ndt2d|pcl")->check(parsedBy([](const std::string& text) {
+    parseBackend(text);
+  }));
+  CLI::Option* budget = command->add_option("--time-budget", a->timeBudgetMs, "the matcher's wall-clock budget (default: the configuration's match.time_budget_ms)")
+                            ->type_name("MS")
+                            ->default_str("")
+                            ->check(finiteNumber());
+  addConfigOption(*command, a->config);
+  command->callback([a, budget] { a->timeBudgetGiven = budget->count() > 0; });
+  return {command, [a] { return runMatch(*a); }};
 }
 
 }  // namespace hdprior::app

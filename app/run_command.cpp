@@ -1,7 +1,8 @@
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "app/progress_bar.h"
@@ -43,21 +44,20 @@ void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetr
   std::printf("; wrote %s\n", out.string().c_str());
 }
 
-}  // namespace
+struct RunArguments {
+  std::string log, out, odometry;
+  bool noPrior = false;
+  ConfigArguments config;
+  OdometryFileArguments odometryFile;
+};
 
-int runRun(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"out", "config", "odometry-drift", "odometry", "odometry-format", "odometry-frame",
-                                         "odometry-times"},
-                              .flags = {"no-prior"}, .minPositional = 1, .maxPositional = 1,
-                              .usage = "hdprior run LOG --out DIR [--no-prior] [--config FILE] "
-                                       "[--odometry-drift SCALE,YAW_DEG_PER_100M[,PITCH_DEG_PER_100M]] [--odometry FILE "
-                                       "[--odometry-format tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]"});
-  const std::filesystem::path out = outputFolder(cl.required("out"));
-  const Config config = configOption(cl);
-  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
-  const ArgoverseLog log(cl.positional()[0]);
-  PipelineOptions options{.priors = !cl.has("no-prior")};
-  if (const auto file = cl.value("odometry")) options.givenOdometry = givenOdometryOf(*file, odometryFile, log);
+int runRun(const RunArguments& a) {
+  const std::filesystem::path out = outputFolder(a.out);
+  const Config config = configOf(a.config);
+  const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
+  const ArgoverseLog log(a.log);
+  PipelineOptions options{.priors = !a.noPrior};
+  if (!a.odometry.empty()) options.givenOdometry = givenOdometryOf(a.odometry, odometryFile, log);
   ProgressBar bar("run");
   const EvaluatedRun r = runAndWriteLog(log, config, options, out, [&](size_t d, size_t t) { bar(d, t); });
   for (const SkippedSweep& s : r.run.skippedSweeps) {
@@ -65,6 +65,26 @@ int runRun(const std::vector<std::string>& args) {
   }
   printSummary(log, r.run, r.metrics, out);
   return 0;
+}
+
+}  // namespace
+
+Command addRunCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "run", "the pipeline over a whole log: lidar odometry, HD-map priors, pose graph, every sweep corrected; "
+             "trajectories, keyframes, metrics and map into DIR");
+  auto a = std::make_shared<RunArguments>();
+  addLogArgument(*command, a->log);
+  command->add_option("--out", a->out, "the output folder")->type_name("DIR")->required();
+  command->add_flag("--no-prior", a->noPrior, "odometry only: no HD-map priors, no pose graph");
+  addConfigOption(*command, a->config);
+  addOdometryDriftOption(*command, a->config);
+  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "the vehicle's poses from another system's trajectory "
+                                                                         "(TUM or KITTI) instead of the lidar odometry")
+                              ->type_name("FILE");
+  addOdometryFileOptions(*command, a->odometryFile, odometry);
+  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  return {command, [a] { return runRun(*a); }};
 }
 
 }  // namespace hdprior::app

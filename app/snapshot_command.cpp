@@ -1,11 +1,13 @@
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
@@ -40,50 +42,37 @@ bool anyNeedsAnalysis(const std::vector<std::string>& layers) {
   return false;
 }
 
-}  // namespace
+struct SnapshotArguments {
+  std::string log, out, size = "1280x720", view = "top", layers, odometry;
+  std::optional<size_t> frame, keyframe;
+  ConfigArguments config;
+  OdometryFileArguments odometryFile;
+};
 
-int runSnapshot(const std::vector<std::string>& args) {
-  const CommandLine cl(
-      args, {.valued = {"frame", "out", "size", "view", "layers", "keyframe", "config", "odometry", "odometry-format",
-                        "odometry-frame", "odometry-times"},
-             .flags = {},
-             .minPositional = 1, .maxPositional = 1,
-             .usage = "hdprior snapshot LOG (--frame N | --keyframe K) --out FILE.png [--size 1280x720] "
-                      "[--view top|orbit|landscape|inspector] [--layers a,b,c] [--config FILE] [--odometry FILE [--odometry-format "
-                      "tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]; "
-                      "  defaults: --view top, --layers all (top, orbit) | drivable,landscape,boundary,road_points,match "
-                      "(landscape) | drivable,boundary,keyframes,road_points,match (inspector, non-ground shown); "
-                      "landscape and inspector need --keyframe; --frame defaults to keyframe K's frame"});
+int runSnapshot(const SnapshotArguments& a) {
   // Check every option before the slow part (map loading, the pipeline).
   render::SnapshotOptions options;
-  render::parseSize(cl.value("size").value_or("1280x720"), options.width, options.height);
-  options.view = render::parseView(cl.value("view").value_or("top"));
-  options.layers = cl.value("layers") ? render::parseLayerList(*cl.value("layers")) : render::defaultLayers(options.view);
+  render::parseSize(a.size, options.width, options.height);
+  options.view = render::parseView(a.view);
+  options.layers = !a.layers.empty() ? render::parseLayerList(a.layers) : render::defaultLayers(options.view);
   if (options.layers.empty()) throw Error("option --layers", "no layer given");
-  std::optional<size_t> keyframe;
-  if (cl.has("keyframe")) {
-    const long long k = cl.integer("keyframe", -1);
-    if (k < 0) throw Error("option --keyframe", "must not be negative");
-    keyframe = size_t(k);
-  }
+  const std::optional<size_t> keyframe = a.keyframe;
   const bool inspectorView = options.view == render::View::Landscape || options.view == render::View::Inspector;
   if (inspectorView && !keyframe) throw Error("option --view", "the landscape and inspector views need --keyframe K");
-  if (!cl.has("frame") && !keyframe) throw Error("option --frame", "missing (the frame to draw)");
-  const long long frameOption = cl.integer("frame", 0);
-  if (frameOption < 0) throw Error("option --frame", "must not be negative");
-  const std::filesystem::path out = cl.required("out");
+  if (!a.frame && !keyframe) throw Error("option --frame", "missing (the frame to draw)");
+  const std::filesystem::path out = a.out;
   const std::filesystem::path outDir = out.parent_path().empty() ? "." : out.parent_path();
   if (!std::filesystem::is_directory(outDir)) throw Error(out.string(), "its folder does not exist");
   if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
-  const Config config = cl.value("config") ? loadConfig(*cl.value("config")) : Config{};
-  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
+  const Config config = configOf(a.config);
+  const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
 
-  const ArgoverseLog log(cl.positional()[0]);
-  if (cl.has("frame") && size_t(frameOption) >= log.sweepCount())
-    throw Error("option --frame", "frame " + std::to_string(frameOption) + " is out of range (the log has " +
+  const ArgoverseLog log(a.log);
+  if (a.frame && *a.frame >= log.sweepCount())
+    throw Error("option --frame", "frame " + std::to_string(*a.frame) + " is out of range (the log has " +
                                       std::to_string(log.sweepCount()) + " sweeps)");
   const std::optional<GivenOdometry> given =
-      cl.value("odometry") ? std::optional(givenOdometryOf(*cl.value("odometry"), odometryFile, log)) : std::nullopt;
+      !a.odometry.empty() ? std::optional(givenOdometryOf(a.odometry, odometryFile, log)) : std::nullopt;
   if (given) givenOdometryInCity(*given, log);  // the file covers the sweeps: checked before the map loads
   const bool analysisNeeded = keyframe || anyNeedsAnalysis(options.layers);
   const bool ndtCells = std::find(options.layers.begin(), options.layers.end(), "ndt_cells") != options.layers.end();
@@ -91,12 +80,48 @@ int runSnapshot(const std::vector<std::string>& args) {
   const std::unique_ptr<HdMap> map = analysisNeeded || ndtCells ? loadPriorMap(log, config)
                                                                 : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
   render::Analysis analysis = analysisNeeded ? runAnalysis(log, *map, config, keyframe, given) : render::Analysis{};
-  const size_t frame = cl.has("frame") ? size_t(frameOption) : analysis.inspection->frame;
+  const size_t frame = a.frame ? *a.frame : analysis.inspection->frame;
   render::Snapshotter snapshotter(log, *map, options);
   snapshotter.setAnalysis(std::move(analysis));
   render::writePng(out, snapshotter.render(frame));
   std::printf("wrote %s (%dx%d, frame %zu)\n", out.string().c_str(), options.width, options.height, frame);
   return 0;
+}
+
+// Binds an optional index option: set when given.
+CLI::Option* addIndexOption(CLI::App& command, const std::string& name, std::optional<size_t>& index, const std::string& help) {
+  return command.add_option_function<long long>(name, [&index](const long long& k) { index = size_t(k); }, help)->check(integerAtLeast(0));
+}
+
+}  // namespace
+
+Command addSnapshotCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand(
+      "snapshot", "one frame drawn headless (OSMesa, no X server) to PNG, with the view's overlay; analysis layers or "
+                  "--keyframe run the pipeline (with priors) first");
+  auto a = std::make_shared<SnapshotArguments>();
+  addLogArgument(*command, a->log);
+  addIndexOption(*command, "--frame", a->frame, "the sweep to draw (default with --keyframe: the keyframe's)")->type_name("N");
+  addIndexOption(*command, "--keyframe", a->keyframe, "inspect keyframe K: re-match it and its cost landscape")->type_name("K");
+  command->add_option("--out", a->out, "the PNG to write")->type_name("FILE.png")->required();
+  command->add_option("--size", a->size, "the image's size in pixels")->type_name("WxH")->check(imageSize());
+  command->add_option("--view", a->view, "the camera; landscape and inspector need --keyframe")
+      ->type_name("top|orbit|landscape|inspector")
+      ->check(parsedBy([](const std::string& text) { render::parseView(text); }));
+  command->add_option("--layers", a->layers,
+                      "all (ground, drivable, boundary, lanes, trajectory, sweep, ego) or a list that may also name crossings, "
+                      "accumulated, ndt_cells, landscape, odometry_trajectory, optimized_trajectory, file_trajectory, keyframes, road_points, match "
+                      "(default: all for top and orbit; drivable,landscape,boundary,road_points,match for landscape; "
+                      "drivable,boundary,keyframes,road_points,match for inspector)")
+      ->type_name("a,b,c")
+      ->check(parsedBy([](const std::string& text) { render::parseLayerList(text); }));
+  addConfigOption(*command, a->config);
+  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "run the pipeline over this trajectory file "
+                                                                         "(TUM or KITTI) instead of the lidar odometry, as run does")
+                              ->type_name("FILE");
+  addOdometryFileOptions(*command, a->odometryFile, odometry);
+  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  return {command, [a] { return runSnapshot(*a); }};
 }
 
 }  // namespace hdprior::app

@@ -1,10 +1,12 @@
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
-#include "app/command_line.h"
 #include "app/commands.h"
 #include "app/common_options.h"
+#include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/odom/given_odometry.h"
@@ -46,48 +48,66 @@ GivenOdometry checkedOdometryFile(const fs::path& file, const OdometryFileOption
   return given;
 }
 
-}  // namespace
+struct ViewArguments {
+  std::string log, script, screenshot, size = "1280x800", config, odometry;
+  OdometryFileArguments odometryFile;
+  long long frames = 0;  // 0: not given
+  bool exit = false;
+};
 
-int runView(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {.valued = {"script", "frames", "screenshot", "size", "config", "odometry", "odometry-format",
-                                         "odometry-frame", "odometry-times"},
-                              .flags = {"exit"},
-                              .minPositional = 0, .maxPositional = 1,
-                              .usage = "hdprior view [LOG] [--script FILE | --frames N --exit] "
-                                       "[--screenshot FILE.png] [--size 1280x800] [--config FILE] [--odometry FILE "
-                                       "[--odometry-format tum|kitti] [--odometry-frame first|city] [--odometry-times FILE]]"});
+int runView(const ViewArguments& a) {
   ui::ViewerOptions options;
-  render::parseSize(cl.value("size").value_or("1280x800"), options.width, options.height);
-  if (cl.has("script") && (cl.has("frames") || cl.has("exit")))
-    throw Error("option --script", "cannot be combined with --frames or --exit");
-  if (const auto script = cl.value("script")) {
-    options.script = ui::readViewScript(*script);
+  render::parseSize(a.size, options.width, options.height);
+  const bool framesGiven = a.frames > 0 || a.exit;
+  if (!a.script.empty() && framesGiven) throw Error("option --script", "cannot be combined with --frames or --exit");
+  if (!a.script.empty()) {
+    options.script = ui::readViewScript(a.script);
     options.scripted = true;
   }
-  if (cl.has("frames") || cl.has("exit")) {
-    options.frames = int(cl.integer("frames", 1));
-    if (options.frames < 1) throw Error("option --frames", "must be at least 1");
-    options.exitAfterFrames = cl.has("exit");
+  if (framesGiven) {
+    options.frames = int(std::max(a.frames, 1LL));
+    options.exitAfterFrames = a.exit;
   }
-  if (const auto screenshot = cl.value("screenshot")) {
-    checkPngPath(*screenshot);
-    options.screenshot = fs::path(*screenshot);
+  if (!a.screenshot.empty()) {
+    checkPngPath(a.screenshot);
+    options.screenshot = fs::path(a.screenshot);
     if (!options.scripted && options.frames == 0) throw Error("option --screenshot", "needs --script or --frames");
   }
-  if (const auto config = cl.value("config")) {
-    options.config = loadConfig(*config);
-    options.configPath = fs::path(*config);
+  if (!a.config.empty()) {
+    options.config = loadConfig(a.config);
+    options.configPath = fs::path(a.config);
   }
-  if (!cl.positional().empty()) {
-    options.log = fs::path(cl.positional()[0]);
+  if (!a.log.empty()) {
+    options.log = fs::path(a.log);
     if (!fs::is_directory(*options.log)) throw Error(options.log->string(), "is not a log directory");
   } else {
     options.log = bundledDemoLog();
   }
   if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (the demo log could not be generated)");
-  const OdometryFileOptions odometryFile = odometryFileOptions(cl, "odometry");
-  if (const auto file = cl.value("odometry")) options.odometry = checkedOdometryFile(*file, odometryFile, options.log);
+  const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
+  if (!a.odometry.empty()) options.odometry = checkedOdometryFile(a.odometry, odometryFile, options.log);
   return ui::runViewer(options);
+}
+
+}  // namespace
+
+Command addViewCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand("view", "the desktop app (GLFW, OpenGL 3.3, Dear ImGui) with the tuning bench; "
+                                                     "without LOG it opens the demo log");
+  auto a = std::make_shared<ViewArguments>();
+  command->add_option("LOG", a->log, "the log's folder (default: the simulator's demo log)");
+  command->add_option("--script", a->script, "run a script, then take the screenshot and quit")->type_name("FILE");
+  command->add_option("--frames", a->frames, "take the screenshot after N frames (--exit alone: 1)")->type_name("N")->default_str("")->check(integerAtLeast(1));
+  command->add_flag("--exit", a->exit, "quit after --frames N frames");
+  command->add_option("--screenshot", a->screenshot, "the window's PNG, with --script or --frames")->type_name("FILE.png");
+  command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(imageSize());
+  command->add_option("--config", a->config, "the configuration the tuning bench starts from (default: the built-in one)")->type_name("FILE");
+  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "open this trajectory file (TUM or KITTI) and run the "
+                                                                         "pipeline over it, as run does")
+                              ->type_name("FILE");
+  addOdometryFileOptions(*command, a->odometryFile, odometry);
+  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  return {command, [a] { return runView(*a); }};
 }
 
 }  // namespace hdprior::app

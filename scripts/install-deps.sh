@@ -3,14 +3,20 @@
 # Installs what is missing with apt-get; a no-op when everything is present.
 set -euo pipefail
 
+# What the installed `hdprior` loads by name at run time, besides the shared libraries it links
+# (those dpkg-shlibdeps finds): GLFW opens the OpenGL library and Mesa's drivers. CMakeLists.txt
+# reads this line into the .deb's Depends; keep it on one line.
+runtime_packages=(libgl1 libgl1-mesa-dri)
+
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libpcl-dev libceres-dev libgdal-dev gdal-bin
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev libstb-dev
   nlohmann-json3-dev liblz4-dev libzstd-dev
-  libgtest-dev libbenchmark-dev libboost-dev
+  libgtest-dev libbenchmark-dev libboost-dev libcli11-dev
   xvfb xauth clang libclang-rt-14-dev
   slurmctld slurmd slurm-client munge
+  "${runtime_packages[@]}"
 )
 
 missing=()

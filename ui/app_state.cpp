@@ -26,7 +26,7 @@ void AppState::open(LoadedLog loaded) {
   renderer_.reset();  // its layers point into the old log and map
   bench_.reset();     // its session too
   loaded_ = std::move(loaded);
-  bench_ = std::make_unique<TuningBench>(*loaded_.log, Config{});
+  bench_ = std::make_unique<TuningBench>(*loaded_.log, defaultConfig());
   scene_ = render::makeScene(*loaded_.log, *loaded_.map);
   renderer_ = std::make_unique<render::Renderer>();
   for (const std::string& name : render::layerNames()) renderer_->addLayer(render::makeLayer(name));

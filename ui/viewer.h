@@ -27,7 +27,7 @@ struct ViewerOptions {
   int frames = 0;  // > 0: after this many frames with the log open (or without a log), screenshot and/or exit
   bool exitAfterFrames = false;
   std::optional<std::filesystem::path> screenshot;  // taken at the end of the script or the frames
-  Config config;                                    // the tuning bench starts from it ...
+  Config config = defaultConfig();                  // the tuning bench starts from it ...
   std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
   std::optional<GivenOdometry> odometry;            // view --odometry FILE: opened in the Pipeline tab
   int width = 1280, height = 800;

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "assets/default_config_json.h"
 #include "engine/error.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/json_reading.h"
@@ -281,10 +282,8 @@ void readSection(const json& obj, const std::string& path, const Sections& secti
   }
 }
 
-}  // namespace
-
-Config parseConfig(const std::string& text, const std::string& source) {
-  Config c;
+// The keys of `text` set over `c`, then the checks across keys.
+Config parseOnto(Config c, const std::string& text, const std::string& source) {
   const Sections sections = sectionsOf(c);
   readSection(json_reading::parse(text, source), "", sections, c, source);
   if (c.odometry.deskew.mode != "none" && c.odometry.deskew.mode != "constant_velocity") {
@@ -311,6 +310,20 @@ Config parseConfig(const std::string& text, const std::string& source) {
   }
   return c;
 }
+
+}  // namespace
+
+const std::string& defaultConfigText() {
+  static const std::string text = assets::kDefaultConfigJson;
+  return text;
+}
+
+const Config& defaultConfig() {
+  static const Config config = parseOnto(Config{}, defaultConfigText(), "default_config.json (built in)");
+  return config;
+}
+
+Config parseConfig(const std::string& text, const std::string& source) { return parseOnto(defaultConfig(), text, source); }
 
 std::string formatConfig(const Config& config) {
   Config c = config;

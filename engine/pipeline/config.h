@@ -11,8 +11,10 @@
 namespace hdprior {
 
 // The one configuration tree of hdprior, read by the CLI and the app from one JSON file. Every key
-// is optional (defaults below and in the option structs); unknown keys and out-of-range values are
-// errors naming the file and the key.
+// is optional: a file's keys are set over the defaults, assets/default_config.json (embedded at
+// build time: defaultConfig()). Unknown keys and out-of-range values are errors naming the file and
+// the key. The structs' own initialisers equal that file (DefaultConfig tests keep them so), for
+// code that uses an option struct without a configuration.
 //
 // {
 //   "odometry": {"features": {...}, "deskew": {"mode": "none"}, "registration": {...}, "local_map": {...},
@@ -36,7 +38,11 @@ struct Config {
   double maxUnreadableSweepShare = 0.05;
 };
 
-Config parseConfig(const std::string& jsonText, const std::string& source);
+// The built-in default configuration: the text of assets/default_config.json, and that text parsed.
+const std::string& defaultConfigText();
+const Config& defaultConfig();
+
+Config parseConfig(const std::string& jsonText, const std::string& source);  // its keys over defaultConfig()
 std::string formatConfig(const Config& config);  // pretty JSON with every key
 Config loadConfig(const std::filesystem::path& path);
 void saveConfig(const std::filesystem::path& path, const Config& config);

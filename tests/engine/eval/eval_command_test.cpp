@@ -309,7 +309,7 @@ TEST(EvalCommandOptions, BadOptionsAreOneLineExit2) {
   const fs::path empty = dir / "empty", out = dir / "out";
   fs::create_directories(empty);
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"eval --out " + out.string(), "expected 1 positional argument(s), got 0"},
+      {"eval --out " + out.string(), "argument DIR: is required"},
       {"eval " + (dir / "missing").string() + " --out " + out.string(), "missing: folder not found"},
       {"eval " + empty.string() + " --out " + out.string(), "empty: no Argoverse 2 logs under it"},
       {"eval " + empty.string() + " --out " + out.string() + " -j x", "option --jobs: 'x' is not an integer"},

@@ -46,8 +46,9 @@ TEST(InfoCommand, SummarisesRealLog) {
 
 TEST(InfoCommand, MissingLogAndBadOptions) {
   expectOneLineError(test::runHdprior("info /nonexistent/log"), "/nonexistent/log: log directory not found");
-  expectOneLineError(test::runHdprior("info"), "expected 1 positional argument");
-  expectOneLineError(test::runHdprior("info '" + test::sharedLog().string() + "' --bogus"), "--bogus");
+  expectOneLineError(test::runHdprior("info"), "argument LOG: is required");
+  expectOneLineError(test::runHdprior("info '" + test::sharedLog().string() + "' extra"), "argument 'extra': not expected");
+  expectOneLineError(test::runHdprior("info '" + test::sharedLog().string() + "' --bogus"), "option --bogus: unknown option");
   expectOneLineError(test::runHdprior("nosuchcommand"), "unknown command");
 }
 

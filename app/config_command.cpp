@@ -1,0 +1,39 @@
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.h"
+#include "engine/error.h"
+#include "engine/pipeline/config.h"
+
+namespace hdprior::app {
+namespace {
+
+struct ConfigCommandArguments {
+  bool defaults = false;
+  std::string check;
+};
+
+int runConfig(const ConfigCommandArguments& a) {
+  if (a.defaults == !a.check.empty()) throw Error("option --defaults/--check", "give exactly one of --defaults and --check FILE");
+  if (a.defaults) {
+    std::fputs(defaultConfigText().c_str(), stdout);
+    return 0;
+  }
+  loadConfig(a.check);  // a problem is an Error naming the file and the key: one line, exit 2
+  std::printf("%s: a valid configuration\n", a.check.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addConfigCommand(CLI::App& hdprior) {
+  CLI::App* command = hdprior.add_subcommand("config", "the configuration: print the built-in defaults, or check a file");
+  auto a = std::make_shared<ConfigCommandArguments>();
+  CLI::Option* defaults = command->add_flag("--defaults", a->defaults,
+                                            "print the default configuration (every key; a file needs only the keys it changes)");
+  command->add_option("--check", a->check, "check a configuration file: unknown keys, types and ranges")->type_name("FILE")->excludes(defaults);
+  return {command, [a] { return runConfig(*a); }};
+}
+
+}  // namespace hdprior::app
