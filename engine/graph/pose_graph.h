@@ -29,7 +29,9 @@ struct PoseGraphOptions {
   // per-axis RMS 0.81-1.31, along-track the worst); 1e-4 / 1e-4 keeps them so (NEES 5.67, 0.80-1.30)
   // and the optimised ATE as it was (0.0320 -> 0.0320 m; 3e-4 / 3e-4: NEES 4.7 but 0.0323 m). Small,
   // but never zero: a source without covariances (a trajectory file) gets this model alone. An
-  // injected drift widens it (coveringOdometryDrift).
+  // injected drift widens it (coveringOdometryDrift). With lidar errors (the scene families) the
+  // built-in odometry drifts 0.06-0.32 %, so the final solve takes these times the factor the
+  // priors support (estimateDriftModel).
   double odometryTranslationSigmaPerM = 1e-4;  // fraction of the distance
   double odometryRotationSigmaDegPerM = 1e-4;
   // The same for a trajectory given in a file (hdprior run --odometry), in place of the two above,
