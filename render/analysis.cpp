@@ -46,7 +46,7 @@ Analysis analysisOf(const Session& session) {
   for (size_t k = 0; k < keyframes.size() && k < poses.size(); ++k)
     a.keyframes.push_back({.keyframe = k, .frame = session.sweepOfFrame(keyframes[k].frame), .pose = poses[k], .status = std::nullopt});
   for (const KeyframeMatch& m : session.matches())
-    if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.match.status;
+    if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.gated ? MatchStatus::Rejected : m.match.status;  // as the graph took it
   return a;
 }
 

@@ -8,7 +8,7 @@
 namespace hdprior {
 
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
-    : configured_(configured), factors_{0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0},
+    : configured_(configured), factors_{1.0, 3.0, 10.0, 30.0, 100.0},
       filters_(factors_.size(), PlanarKalman(start)), logLikelihood_(factors_.size(), 0.0) {}
 
 PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {

@@ -33,9 +33,9 @@ RunMetrics evaluateRun(const PipelineRun& run) {
     }
   }
   for (const KeyframeMatch& k : run.matches) {
-    ++(k.match.status == MatchStatus::Accepted ? m.matches.accepted
-       : k.match.status == MatchStatus::Degenerate ? m.matches.degenerate
-                                                   : m.matches.rejected);
+    ++(k.gated || k.match.status == MatchStatus::Rejected ? m.matches.rejected
+       : k.match.status == MatchStatus::Accepted          ? m.matches.accepted
+                                                          : m.matches.degenerate);
     if (k.hasPrior && run.groundTruth.covers(k.timestampNs)) {
       m.priorErrors.push_back(matchErrorSample(planarPose(run.groundTruth.at(k.timestampNs)), planarPose(k.prior.pose),
                                                marginalPlanarInformation(k.prior)));

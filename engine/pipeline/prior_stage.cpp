@@ -65,9 +65,7 @@ void PriorStage::gatePrior(KeyframeMatch& m) {
   const double p = config_.prior.innovationGateProbability;
   if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
     m.hasPrior = false;
-    m.match.status = MatchStatus::Rejected;
-    m.match.reason = "inconsistent with the odometry's prediction (innovation chi2 " + std::to_string(t.chi2) + ", " +
-                     std::to_string(t.dof) + " directions)";
+    m.gated = true;
     return;
   }
   gate_.update(t);

@@ -32,7 +32,8 @@ struct KeyframeMatch {
   MatchResult match;
   bool hasPrior = false;            // accepted or degenerate: a prior went into the graph
   PosePrior prior;
-  double innovationChi2 = 0.0;      // the prior against the prediction (InnovationGate); 0 without a prior
+  double innovationChi2 = 0.0;      // the prior against the graph's prediction (PlanarKalman); 0 without a prior
+  bool gated = false;               // the innovation gate left the prior out (`match` is as the matcher gave it)
 };
 
 // Loads the sweep of an odometry frame.

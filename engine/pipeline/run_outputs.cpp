@@ -76,7 +76,8 @@ json matchJson(const KeyframeMatch& k) {
           {"laplace_sigmas", {{"along_m", sigmaJson(r.laplaceSigmas.x())},
                               {"lateral_m", sigmaJson(r.laplaceSigmas.y())},
                               {"yaw_deg", sigmaJson(r.laplaceSigmas.z(), 180.0 / std::numbers::pi)}}},
-          {"iterations", r.iterations}, {"time_ms", r.timeMs}, {"prior", k.hasPrior}, {"innovation_chi2", k.innovationChi2}};
+          {"iterations", r.iterations}, {"time_ms", r.timeMs}, {"prior", k.hasPrior}, {"innovation_chi2", k.innovationChi2},
+          {"gated", k.gated}};
 }
 
 json keyframesJson(const PipelineRun& run) {

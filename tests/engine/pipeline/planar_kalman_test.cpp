@@ -112,7 +112,7 @@ TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
   const PoseGraphOptions configured;
   const PoseGraphOptions drifting = likeliestModel(0.02 * kDeg), exact = likeliestModel(0.0);
   EXPECT_GE(drifting.odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
-  EXPECT_LE(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_EQ(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);  // never below the configured
   EXPECT_EQ(drifting.odometryTranslationSigmaPerM / configured.odometryTranslationSigmaPerM,
             drifting.odometryRotationSigmaDegPerM / configured.odometryRotationSigmaDegPerM);
 }
