@@ -50,6 +50,12 @@ void addOdometryTimesOption(CLI::App& command, OdometryFileArguments& arguments,
   command.add_option("--odometry-times", arguments.times, "a KITTI file's timestamps, one a line")->type_name("FILE")->needs(source);
 }
 
+void addGivenOdometryOptions(CLI::App& command, std::string& file, OdometryFileArguments& arguments, const std::string& help) {
+  CLI::Option* odometry = command.add_option("--odometry", file, help)->type_name("FILE");
+  addOdometryFileOptions(command, arguments, odometry);
+  addOdometryTimesOption(command, arguments, odometry);
+}
+
 OdometryFileOptions odometryFileOptions(const OdometryFileArguments& arguments) {
   OdometryFileOptions o;
   if (!arguments.format.empty()) o.format = parseTrajectoryFormat(arguments.format, "option --odometry-format");

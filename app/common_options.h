@@ -39,6 +39,8 @@ struct OdometryFileArguments {
 };
 void addOdometryFileOptions(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source);
 void addOdometryTimesOption(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source);
+// --odometry FILE (a trajectory file as the odometry) with the three above.
+void addGivenOdometryOptions(CLI::App& command, std::string& file, OdometryFileArguments& arguments, const std::string& help);
 OdometryFileOptions odometryFileOptions(const OdometryFileArguments& arguments);
 
 }  // namespace hdprior::app

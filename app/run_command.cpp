@@ -79,11 +79,9 @@ Command addRunCommand(CLI::App& hdprior) {
   command->add_flag("--no-prior", a->noPrior, "odometry only: no HD-map priors, no pose graph");
   addConfigOption(*command, a->config);
   addOdometryDriftOption(*command, a->config);
-  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "the vehicle's poses from another system's trajectory "
-                                                                         "(TUM or KITTI) instead of the lidar odometry")
-                              ->type_name("FILE");
-  addOdometryFileOptions(*command, a->odometryFile, odometry);
-  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  addGivenOdometryOptions(*command, a->odometry, a->odometryFile,
+                          "the vehicle's poses from another system's trajectory "
+                          "(TUM or KITTI) instead of the lidar odometry");
   return {command, [a] { return runRun(*a); }};
 }
 

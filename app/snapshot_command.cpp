@@ -116,11 +116,9 @@ Command addSnapshotCommand(CLI::App& hdprior) {
       ->type_name("a,b,c")
       ->check(parsedBy([](const std::string& text) { render::parseLayerList(text); }));
   addConfigOption(*command, a->config);
-  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "run the pipeline over this trajectory file "
-                                                                         "(TUM or KITTI) instead of the lidar odometry, as run does")
-                              ->type_name("FILE");
-  addOdometryFileOptions(*command, a->odometryFile, odometry);
-  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  addGivenOdometryOptions(*command, a->odometry, a->odometryFile,
+                          "run the pipeline over this trajectory file "
+                          "(TUM or KITTI) instead of the lidar odometry, as run does");
   return {command, [a] { return runSnapshot(*a); }};
 }
 

@@ -102,11 +102,9 @@ Command addViewCommand(CLI::App& hdprior) {
   command->add_option("--screenshot", a->screenshot, "the window's PNG, with --script or --frames")->type_name("FILE.png");
   command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(imageSize());
   command->add_option("--config", a->config, "the configuration the tuning bench starts from (default: the built-in one)")->type_name("FILE");
-  CLI::Option* odometry = command->add_option("--odometry", a->odometry, "open this trajectory file (TUM or KITTI) and run the "
-                                                                         "pipeline over it, as run does")
-                              ->type_name("FILE");
-  addOdometryFileOptions(*command, a->odometryFile, odometry);
-  addOdometryTimesOption(*command, a->odometryFile, odometry);
+  addGivenOdometryOptions(*command, a->odometry, a->odometryFile,
+                          "open this trajectory file (TUM or KITTI) and run the "
+                          "pipeline over it, as run does");
   return {command, [a] { return runView(*a); }};
 }
 

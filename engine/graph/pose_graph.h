@@ -30,8 +30,8 @@ struct PoseGraphOptions {
   // and the optimised ATE as it was (0.0320 -> 0.0320 m; 3e-4 / 3e-4: NEES 4.7 but 0.0323 m). Small,
   // but never zero: a source without covariances (a trajectory file) gets this model alone. An
   // injected drift widens it (coveringOdometryDrift). With lidar errors (the scene families) the
-  // built-in odometry drifts 0.06-0.32 %, so the final solve takes these times the factor the
-  // priors support (estimateDriftModel).
+  // built-in odometry drifts 0.06-0.32 %; estimateDriftModel lets the final solve take these times
+  // the factor the priors support.
   double odometryTranslationSigmaPerM = 1e-4;  // fraction of the distance
   double odometryRotationSigmaDegPerM = 1e-4;
   // The same for a trajectory given in a file (hdprior run --odometry), in place of the two above,
@@ -57,9 +57,10 @@ struct PoseGraphOptions {
   // drivable area is 0.2 m off do not add up to a 0.03 m certainty. 0: each prior's map error is its
   // own, independent of the others' (the default: README, Unseen data, says why).
   double mapErrorLength = 0.0;
-  // The final solve takes the per-metre sigmas above times the factor (0.1-100) under which the run's
-  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured.
-  bool estimateDriftModel = true;
+  // The final solve takes the per-metre sigmas above times the factor (1-100) under which the run's
+  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured. Off: a
+  // run of priors that share one bias looks like drift to it (README, Odometry and evaluation).
+  bool estimateDriftModel = false;
 };
 
 struct SolveSummary {
