@@ -9,7 +9,7 @@ namespace hdprior {
 
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
     : configured_(configured), factors_{1.0, 3.0, 10.0, 30.0, 100.0},
-      filters_(factors_.size(), PlanarKalman(start)), logLikelihood_(factors_.size(), 0.0) {}
+      filters_(factors_.size(), PlanarKalman(start, configured.mapErrorLength)), logLikelihood_(factors_.size(), 0.0) {}
 
 PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
   PoseGraphOptions o = configured_;
@@ -24,9 +24,9 @@ void DriftModelLikelihood::step(const Keyframe& keyframe) {
   }
 }
 
-void DriftModelLikelihood::observe(const Eigen::Vector3d& prior, const Eigen::Matrix3d& information) {
+void DriftModelLikelihood::observe(const PosePrior& prior) {
   for (size_t i = 0; i < filters_.size(); ++i) {
-    const PlanarKalman::Innovation n = filters_[i].innovation(prior, information);
+    const PlanarKalman::Innovation n = filters_[i].innovation(prior);
     logLikelihood_[i] += n.logDensity;
     filters_[i].update(n);
   }

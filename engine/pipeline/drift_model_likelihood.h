@@ -20,12 +20,14 @@ struct Keyframe;
 // is the least drift a candidate assumes: the priors' sigmas are wide (median NEES 0.01-0.05), and
 // under wide sigmas a small drift is invisible, so a tighter model would always look likelier
 // (with 0.1x allowed, a run with 0.7 % injected drift chose 0.07 % and kept all of its error).
+// With a map error length the filters carry the map's offset as the graph does, so that a run of
+// priors sharing one map error is not read as drift.
 class DriftModelLikelihood {
  public:
   DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start);
 
   void step(const Keyframe& keyframe);
-  void observe(const Eigen::Vector3d& prior, const Eigen::Matrix3d& information);
+  void observe(const PosePrior& prior);
 
   // The configured options with the likeliest candidate's per-metre sigmas.
   PoseGraphOptions likeliest() const;

@@ -32,12 +32,17 @@ double chiSquareQuantile(double probability, int dof) {
   return 0.5 * (lo + hi);
 }
 
+PlanarKalman::PlanarKalman(const Eigen::Vector3d& start, double mapErrorLength) : mapErrorLength_(mapErrorLength) {
+  state_.head<3>() = start;
+}
+
 void PlanarKalman::predict(const SE3& previousTThis, const Matrix6d& stepInformation) {
-  const double c = std::cos(mean_.z()), s = std::sin(mean_.z());
+  const Eigen::Vector3d pose = mean();
+  const double c = std::cos(pose.z()), s = std::sin(pose.z());
   Eigen::Matrix3d rotation;  // the step's (x, y, yaw) in its start frame -> city
   rotation << c, -s, 0, s, c, 0, 0, 0, 1;
   const Eigen::Vector2d t = rotation.topLeftCorner<2, 2>() * previousTThis.translation().head<2>();
-  Eigen::Matrix3d F = Eigen::Matrix3d::Identity();  // d(next pose) / d(this pose)
+  Matrix5d F = Matrix5d::Identity();  // d(next state) / d(this state): the map offset stays
   F(0, 2) = -t.y();
   F(1, 2) = t.x();
   const Matrix6d step = stepInformation.inverse();  // residual order [rx, ry, rz, tx, ty, tz]
@@ -45,11 +50,38 @@ void PlanarKalman::predict(const SE3& previousTThis, const Matrix6d& stepInforma
   Eigen::Matrix3d Q;
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) Q(r, k) = step(planar[r], planar[k]);
-  covariance_ = F * covariance_ * F.transpose() + rotation * Q * rotation.transpose();
-  mean_ = offsetPose(mean_, {previousTThis.translation().x(), previousTThis.translation().y(), yawOf(previousTThis)});
+  covariance_ = F * covariance_ * F.transpose();
+  covariance_.topLeftCorner<3, 3>() += rotation * Q * rotation.transpose();
+  state_.head<3>() = offsetPose(pose, {previousTThis.translation().x(), previousTThis.translation().y(), yawOf(previousTThis)});
+  metresSinceOffset_ += previousTThis.translation().head<2>().norm();
 }
 
-PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, const Eigen::Matrix3d& priorInformation) const {
+PlanarKalman::State PlanarKalman::atPrior(double mapSigma) const {
+  State s{state_, covariance_};
+  if (!(mapErrorLength_ > 0.0 && mapSigma > 0.0)) return s;
+  // As the graph's MapOffsetStep: the first offset is N(0, sigma^2), each next a * previous + noise.
+  const double a = hasMapOffset_ ? std::exp(-metresSinceOffset_ / mapErrorLength_) : 0.0;
+  s.mean.tail<2>() *= a;
+  s.covariance.bottomRows<2>() *= a;
+  s.covariance.rightCols<2>() *= a;
+  s.covariance.bottomRightCorner<2, 2>().diagonal().array() += mapSigma * mapSigma * (1.0 - a * a);
+  return s;
+}
+
+namespace {
+
+// What a prior observes of the state: the pose, plus the map offset in x, y when it carries one.
+Eigen::Matrix<double, 3, 5> observation(bool withOffset) {
+  Eigen::Matrix<double, 3, 5> J = Eigen::Matrix<double, 3, 5>::Zero();
+  J.leftCols<3>().setIdentity();
+  if (withOffset) J.rightCols<2>().topRows<2>().setIdentity();
+  return J;
+}
+
+}  // namespace
+
+PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, const Eigen::Matrix3d& priorInformation,
+                                                  double mapSigma) const {
   Innovation n;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (priorInformation + priorInformation.transpose()));
   const double largest = eig.eigenvalues().maxCoeff();
@@ -61,12 +93,15 @@ PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, 
     priorVariance(n.dof) = 1.0 / eig.eigenvalues()(i);
     ++n.dof;
   }
-  Eigen::Vector3d d = prior - mean_;
+  n.mapSigma = mapErrorLength_ > 0.0 && mapSigma > 0.0 ? mapSigma : 0.0;
+  const State s = atPrior(n.mapSigma);
+  const Eigen::Matrix<double, 3, 5> J = observation(n.mapSigma > 0.0);
+  Eigen::Vector3d d = prior - J * s.mean;
   d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
   const int k = n.dof;
-  const Eigen::MatrixXd U = n.basis.leftCols(k);
-  const Eigen::MatrixXd S = U.transpose() * covariance_ * U + Eigen::MatrixXd(priorVariance.head(k).asDiagonal());
-  const Eigen::VectorXd y = U.transpose() * d;
+  const Eigen::MatrixXd H = n.basis.leftCols(k).transpose() * J;
+  const Eigen::MatrixXd S = H * s.covariance * H.transpose() + Eigen::MatrixXd(priorVariance.head(k).asDiagonal());
+  const Eigen::VectorXd y = n.basis.leftCols(k).transpose() * d;
   const auto ldlt = S.ldlt();
   n.chi2 = y.dot(ldlt.solve(y));
   n.logDensity = -0.5 * (n.chi2 + std::log(S.determinant()) + k * std::log(2.0 * std::numbers::pi));
@@ -75,15 +110,26 @@ PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, 
   return n;
 }
 
+PlanarKalman::Innovation PlanarKalman::innovation(const PosePrior& prior) const {
+  const bool field = mapErrorLength_ > 0.0 && prior.mapSigma > 0.0;
+  return field ? innovation(planarPose(prior.pose), planarInformation(prior), prior.mapSigma)
+               : innovation(planarPose(prior.pose), marginalPlanarInformation(prior));
+}
+
 void PlanarKalman::update(const Innovation& n) {
   if (n.dof == 0) return;
   const int k = n.dof;
-  const Eigen::MatrixXd U = n.basis.leftCols(k);
+  const State s = atPrior(n.mapSigma);
+  const Eigen::MatrixXd H = n.basis.leftCols(k).transpose() * observation(n.mapSigma > 0.0);
   const Eigen::MatrixXd S = n.S.topLeftCorner(k, k);
-  const Eigen::MatrixXd K = covariance_ * U * S.inverse();
-  mean_ += K * n.y.head(k);
-  const Eigen::Matrix3d P = (Eigen::Matrix3d::Identity() - K * U.transpose()) * covariance_;
+  const Eigen::MatrixXd K = s.covariance * H.transpose() * S.inverse();
+  state_ = s.mean + K * n.y.head(k);
+  const Matrix5d P = (Matrix5d::Identity() - K * H) * s.covariance;
   covariance_ = 0.5 * (P + P.transpose());
+  if (n.mapSigma > 0.0) {
+    hasMapOffset_ = true;
+    metresSinceOffset_ = 0.0;
+  }
 }
 
 }  // namespace hdprior

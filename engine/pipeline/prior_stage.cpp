@@ -58,9 +58,7 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
 }
 
 void PriorStage::gatePrior(KeyframeMatch& m) {
-  const Eigen::Vector3d prior = planarPose(m.prior.pose);
-  const Eigen::Matrix3d information = marginalPlanarInformation(m.prior);
-  const PlanarKalman::Innovation t = gate_.innovation(prior, information);
+  const PlanarKalman::Innovation t = gate_.innovation(m.prior);
   m.innovationChi2 = t.chi2;
   const double p = config_.prior.innovationGateProbability;
   if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
@@ -69,7 +67,7 @@ void PriorStage::gatePrior(KeyframeMatch& m) {
     return;
   }
   gate_.update(t);
-  if (driftModels_) driftModels_->observe(prior, information);
+  if (driftModels_) driftModels_->observe(m.prior);
 }
 
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
@@ -82,7 +80,7 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   m.predicted = predictedPose(kf);
   const Matrix6d odometryInfo = odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph);
   if (graph_->size() == 0) {
-    gate_ = PlanarKalman(planarPose(m.predicted));
+    gate_ = PlanarKalman(planarPose(m.predicted), config_.graph.mapErrorLength);
     if (config_.graph.estimateDriftModel) driftModels_.emplace(config_.graph, planarPose(m.predicted));
   } else {
     gate_.setMean(planarPose(graph_->pose(graph_->size() - 1)));

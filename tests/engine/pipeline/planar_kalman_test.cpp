@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "engine/pipeline/drift_model_likelihood.h"
@@ -29,6 +30,15 @@ SE3 forward(double metres, double yaw = 0.0) {
 
 // A lateral prior (y observed only, vehicle heading +x) with this sigma.
 Eigen::Matrix3d lateralInformation(double sigma) { return Eigen::Vector3d(0.0, 1.0 / (sigma * sigma), 0.0).asDiagonal(); }
+
+// The same as a pose prior at (x, y), heading +x: sigma given the map, and the map's own sigma.
+PosePrior lateralPrior(double x, double y, double sigma, double mapSigma) {
+  PosePrior p;
+  p.pose.translation() = Eigen::Vector3d(x, y, 0.0);
+  p.information(2, 2) = 1.0 / (sigma * sigma);  // order yaw, x, y, z
+  p.mapSigma = mapSigma;
+  return p;
+}
 
 TEST(PlanarKalman, ChiSquareQuantilesAreTheTabulatedOnes) {
   EXPECT_NEAR(chiSquareQuantile(0.99, 1), 6.635, 1e-3);
@@ -103,7 +113,7 @@ PoseGraphOptions likeliestModel(double yawBiasPerStep) {
   for (int k = 1; k <= 100; ++k) {
     likelihood.step(kf);
     truth.x() += 2.0;
-    likelihood.observe(truth + Eigen::Vector3d(0.0, noise[k % 5], 0.0), lateralInformation(0.1));
+    likelihood.observe(lateralPrior(truth.x(), noise[k % 5], 0.1, 0.0));
   }
   return likelihood.likeliest();
 }
@@ -115,6 +125,48 @@ TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
   EXPECT_EQ(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);  // never below the configured
   EXPECT_EQ(drifting.odometryTranslationSigmaPerM / configured.odometryTranslationSigmaPerM,
             drifting.odometryRotationSigmaDegPerM / configured.odometryRotationSigmaDegPerM);
+}
+
+// An odometry sure of itself (0.15 deg / 100 m) along +x and lateral priors that all sit 0.25 m to the left: the map's own error,
+// shared by every prior (sigma 0.05 given the map, map sigma 0.2).
+template <typename Observe>
+void priorsSharingOneMapError(Observe observe, const std::function<void()>& step) {
+  const double noise[5] = {0.03, -0.05, 0.04, -0.02, 0.0};
+  for (int k = 1; k <= 80; ++k) {
+    step();
+    observe(lateralPrior(2.0 * k, 0.25 + noise[k % 5], 0.05, 0.2));
+  }
+}
+
+TEST(PlanarKalman, AMapErrorFieldTakesASharedOffsetForTheMapsNotThePoses) {
+  PlanarKalman independent, field(Eigen::Vector3d::Zero(), 50.0);
+  for (PlanarKalman* f : {&independent, &field}) {
+    priorsSharingOneMapError([&](const PosePrior& p) { f->update(f->innovation(p)); },
+                             [&] { f->predict(forward(2.0), stepInformation(0.003 * kDeg, 0.005)); });
+  }
+  // Taken as independent, eighty priors 0.25 m off pull the pose most of the way; as one field, the
+  // offset is the map's, learnt where the start pins the pose, and the pose stays near the truth.
+  EXPECT_GT(independent.mean().y(), 0.15);
+  EXPECT_LT(std::abs(field.mean().y()), 0.06);
+  EXPECT_NEAR(field.mapOffset().y(), 0.25, 0.06);
+  EXPECT_NEAR(field.mean().x(), 160.0, 1e-3);
+}
+
+PoseGraphOptions likeliestUnderSharedMapError(double mapErrorLength) {
+  PoseGraphOptions configured;
+  configured.mapErrorLength = mapErrorLength;
+  DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
+  Keyframe kf;
+  kf.previousTThis = forward(2.0);
+  kf.relativeCovariance = Matrix6d::Identity() * 1e-8;
+  priorsSharingOneMapError([&](const PosePrior& p) { likelihood.observe(p); }, [&] { likelihood.step(kf); });
+  return likelihood.likeliest();
+}
+
+TEST(DriftModelLikelihood, PriorsSharingOneMapErrorLookLikeDriftUnlessTheMapErrorIsAField) {
+  const PoseGraphOptions configured;
+  EXPECT_GT(likeliestUnderSharedMapError(0.0).odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_EQ(likeliestUnderSharedMapError(50.0).odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
 }
 
 }  // namespace
