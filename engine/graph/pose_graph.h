@@ -54,13 +54,15 @@ struct PoseGraphOptions {
   bool odometryCovariance = true;
   // The map's own error (a prior's mapSigma) as a field correlated along the route over this many
   // metres: neighbouring priors share their map error, so many of them along a street whose
-  // drivable area is 0.2 m off do not add up to a 0.03 m certainty. 0: each prior's map error is its
-  // own, independent of the others' (the default: README, Unseen data, says why).
-  double mapErrorLength = 0.0;
+  // drivable area is 0.2 m off do not add up to a 0.03 m certainty, and a good odometry is not pulled
+  // onto the map's error. 50 m: the scene families' map error is smooth over 20-80 m. 0: each
+  // prior's map error is its own, independent of the others'.
+  double mapErrorLength = 50.0;
   // The final solve takes the per-metre sigmas above times the factor (1-100) under which the run's
-  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured. Off: a
-  // run of priors that share one bias looks like drift to it (README, Odometry and evaluation).
-  bool estimateDriftModel = false;
+  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured. It
+  // needs the map error field: with independent map errors a run of priors sharing one map error
+  // looks like drift to it (README, Odometry and evaluation).
+  bool estimateDriftModel = true;
 };
 
 struct SolveSummary {
