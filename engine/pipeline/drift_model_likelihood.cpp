@@ -7,14 +7,30 @@
 
 namespace hdprior {
 
+namespace {
+
+std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOptions& configured) {
+  std::vector<double> lengths{configured.mapErrorLength};
+  if (configured.mapErrorLength > 0.0) lengths.push_back(0.0);
+  std::vector<DriftModelLikelihood::Candidate> out;
+  for (double length : lengths) {
+    for (double factor : {1.0, 3.0, 10.0, 30.0, 100.0}) out.push_back({factor, length});
+  }
+  return out;
+}
+
+}  // namespace
+
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
-    : configured_(configured), factors_{1.0, 3.0, 10.0, 30.0, 100.0},
-      filters_(factors_.size(), PlanarKalman(start, configured.mapErrorLength)), logLikelihood_(factors_.size(), 0.0) {}
+    : configured_(configured), candidates_(candidatesFor(configured)), logLikelihood_(candidates_.size(), 0.0) {
+  for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength);
+}
 
 PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
   PoseGraphOptions o = configured_;
-  o.odometryTranslationSigmaPerM *= factors_[i];
-  o.odometryRotationSigmaDegPerM *= factors_[i];
+  o.odometryTranslationSigmaPerM *= candidates_[i].factor;
+  o.odometryRotationSigmaDegPerM *= candidates_[i].factor;
+  o.mapErrorLength = candidates_[i].mapErrorLength;
   return o;
 }
 

@@ -21,7 +21,9 @@ struct Keyframe;
 // under wide sigmas a small drift is invisible, so a tighter model would always look likelier
 // (with 0.1x allowed, a run with 0.7 % injected drift chose 0.07 % and kept all of its error).
 // With a map error length the filters carry the map's offset as the graph does, so that a run of
-// priors sharing one map error is not read as drift.
+// priors sharing one map error is not read as drift; each factor is then tried with the map error
+// as that field and as independent per prior (a map better than its sigma, where the field would
+// take a real drift for the map's), and the final solve takes the map error model too.
 class DriftModelLikelihood {
  public:
   DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start);
@@ -29,16 +31,21 @@ class DriftModelLikelihood {
   void step(const Keyframe& keyframe);
   void observe(const PosePrior& prior);
 
-  // The configured options with the likeliest candidate's per-metre sigmas.
+  // The configured options with the likeliest candidate's per-metre sigmas and map error length.
   PoseGraphOptions likeliest() const;
-  const std::vector<double>& factors() const { return factors_; }
+
+  struct Candidate {
+    double factor = 1.0;          // times the configured per-metre sigmas
+    double mapErrorLength = 0.0;  // the configured one, or 0 (independent)
+  };
+  const std::vector<Candidate>& candidates() const { return candidates_; }
   const std::vector<double>& logLikelihoods() const { return logLikelihood_; }
 
  private:
   PoseGraphOptions candidate(size_t i) const;
 
   PoseGraphOptions configured_;
-  std::vector<double> factors_;
+  std::vector<Candidate> candidates_;
   std::vector<PlanarKalman> filters_;
   std::vector<double> logLikelihood_;
 };

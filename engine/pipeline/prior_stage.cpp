@@ -118,9 +118,11 @@ SolveSummary PriorStage::finish(const Odometry& odometry) {
   if (driftModels_ && config_.graph.estimateDriftModel) {
     const PoseGraphOptions likeliest = driftModels_->likeliest();
     if (likeliest.odometryTranslationSigmaPerM != config_.graph.odometryTranslationSigmaPerM ||
-        likeliest.odometryRotationSigmaDegPerM != config_.graph.odometryRotationSigmaDegPerM) {
+        likeliest.odometryRotationSigmaDegPerM != config_.graph.odometryRotationSigmaDegPerM ||
+        likeliest.mapErrorLength != config_.graph.mapErrorLength) {
       config_.graph.odometryTranslationSigmaPerM = likeliest.odometryTranslationSigmaPerM;
       config_.graph.odometryRotationSigmaDegPerM = likeliest.odometryRotationSigmaDegPerM;
+      config_.graph.mapErrorLength = likeliest.mapErrorLength;
       rebuild(odometry);
     }
   }

@@ -166,7 +166,24 @@ PoseGraphOptions likeliestUnderSharedMapError(double mapErrorLength) {
 TEST(DriftModelLikelihood, PriorsSharingOneMapErrorLookLikeDriftUnlessTheMapErrorIsAField) {
   const PoseGraphOptions configured;
   EXPECT_GT(likeliestUnderSharedMapError(0.0).odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
-  EXPECT_EQ(likeliestUnderSharedMapError(50.0).odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  const PoseGraphOptions field = likeliestUnderSharedMapError(50.0);
+  EXPECT_EQ(field.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_EQ(field.mapErrorLength, 50.0);  // the field, not independent errors, explains them
+}
+
+TEST(DriftModelLikelihood, MapErrorsThatChangeFromPriorToPriorAreTakenAsIndependent) {
+  PoseGraphOptions configured;
+  configured.mapErrorLength = 50.0;
+  DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
+  EXPECT_EQ(likelihood.candidates().size(), 10u);  // five drift factors, field or independent
+  Keyframe kf;
+  kf.previousTThis = forward(2.0);
+  kf.relativeCovariance = Matrix6d::Identity() * 1e-8;
+  for (int k = 1; k <= 80; ++k) {  // 0.2 m to one side, then the other: no field 50 m long does that
+    likelihood.step(kf);
+    likelihood.observe(lateralPrior(2.0 * k, k % 2 ? 0.2 : -0.2, 0.05, 0.2));
+  }
+  EXPECT_EQ(likelihood.likeliest().mapErrorLength, 0.0);
 }
 
 }  // namespace
