@@ -58,10 +58,11 @@ struct PoseGraphOptions {
   // onto the map's error. 50 m: the scene families' map error is smooth over 20-80 m. 0: each
   // prior's map error is its own, independent of the others'.
   double mapErrorLength = 50.0;
-  // The final solve takes the per-metre sigmas above times the factor (1-100) under which the run's
-  // priors were likeliest (engine/pipeline/drift_model_likelihood.h); false: as configured. It
-  // needs the map error field: with independent map errors a run of priors sharing one map error
-  // looks like drift to it (README, Odometry and evaluation).
+  // The final solve takes the per-metre sigmas above times the factor (1-100), and the map error as
+  // the field above or independent, under which the run's priors were likeliest
+  // (engine/pipeline/drift_model_likelihood.h); false: as configured. It needs the map error field:
+  // with independent map errors only, a run of priors sharing one map error looks like drift to it
+  // (README, Odometry and evaluation).
   bool estimateDriftModel = true;
 };
 
