@@ -12,21 +12,7 @@ import math
 import os
 import sys
 
-
-def read_tum(path):
-    poses = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            poses[round(v[0], 6)] = v[1:]
-    return poses
-
-
-def yaw(q):
-    x, y, z, w = q
-    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+from run_files import read_tum, yaw
 
 
 def along_lateral(truth, estimate):

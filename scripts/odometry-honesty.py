@@ -16,24 +16,10 @@ import os
 import statistics
 import sys
 
+from run_files import read_tum, yaw
+
 WINDOWS = (1, 5, 25)
 CHI2_3_997 = 14.16
-
-
-def read_tum(path):
-    poses = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#') or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            poses[round(v[0], 6)] = v[1:]
-    return poses
-
-
-def yaw_of(q):
-    x, y, z, w = q
-    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
 
 
 def wrap(a):
@@ -105,13 +91,13 @@ def nees_of_log(folder, window):
     truth = read_tum(os.path.join(folder, 'groundtruth.tum'))
 
     def planar(p):
-        return (p[0], p[1], yaw_of(p[3:7]))
+        return (p[0], p[1], yaw(p[3:7]))
 
     odo, gt = [], []
     for k in keyframes:
         t = round(k['timestamp_ns'] / 1e9, 6)
         pose = k['city_T_ego']
-        odo.append((pose['t'][0], pose['t'][1], yaw_of(pose['q_xyzw'])))
+        odo.append((pose['t'][0], pose['t'][1], yaw(pose['q_xyzw'])))
         gt.append(planar(truth[t]) if t in truth else None)
     out = []
     for i in range(0, len(keyframes) - window, window):
