@@ -32,14 +32,14 @@ std::string csvRow(const std::vector<std::string>& fields) {
 
 std::string rpeField(const RpeResult& r) { return r.segments ? number(r.translationPercent) : ""; }
 
-// The eight columns of one trajectory, or empty fields.
+// The nine columns of one trajectory, or empty fields.
 void appendTrajectory(std::vector<std::string>& row, const std::optional<TrajectoryEvaluation>& e) {
   if (!e) {
-    row.insert(row.end(), 8, "");
+    row.insert(row.end(), 9, "");
     return;
   }
   const ErrorStats& t = e->ate.translation;
-  for (double v : {t.mean, t.median, t.rmse, t.std, t.max, e->ate.lateral.rmse}) row.push_back(number(v));
+  for (double v : {t.mean, t.median, t.rmse, t.std, t.max, e->ate.along.rmse, e->ate.lateral.rmse}) row.push_back(number(v));
   row.push_back(rpeField(e->rpe10));
   row.push_back(rpeField(e->rpe100));
 }
@@ -85,9 +85,10 @@ std::string calibrationMarkdown(const EvalSummary& s) {
   return md;
 }
 
-void forEachRow(const EvalSummary& s, const std::function<void(const char*, const ErrorStats&)>& fn) {
-  fn("odometry", s.odometry);
-  if (s.optimized) fn(kOptimizedName, *s.optimized);
+using RowFunction = std::function<void(const char*, const ErrorStats&, const EvalSummary::RoadSplit&)>;
+void forEachRow(const EvalSummary& s, const RowFunction& fn) {
+  fn("odometry", s.odometry, s.odometrySplit);
+  if (s.optimized) fn(kOptimizedName, *s.optimized, s.optimizedSplit);
 }
 
 }  // namespace
@@ -95,7 +96,7 @@ void forEachRow(const EvalSummary& s, const std::function<void(const char*, cons
 std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
   std::vector<std::string> header = {"log_id", "path", "sweeps", "skipped_sweeps", "path_length_m"};
   for (const char* t : {"odometry", "optimized"}) {
-    for (const char* c : {"ate_mean_m", "ate_median_m", "ate_rmse_m", "ate_std_m", "ate_max_m", "lateral_rmse_m",
+    for (const char* c : {"ate_mean_m", "ate_median_m", "ate_rmse_m", "ate_std_m", "ate_max_m", "along_rmse_m", "lateral_rmse_m",
                           "rpe10_percent", "rpe100_percent"}) {
       header.push_back(std::string(t) + "_" + c);
     }
@@ -135,10 +136,14 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
 }
 
 std::string summaryMarkdown(const EvalSummary& s) {
-  std::string md = averagingLine(s) + "\n\n| trajectory | logs | mean | median | rmse | std | max |\n|---|---:|---:|---:|---:|---:|---:|\n";
-  forEachRow(s, [&](const char* name, const ErrorStats& e) {
+  std::string md = averagingLine(s) +
+                   " Along and lateral: the rmse of the error along and across the true heading (the drivable area "
+                   "observes the lateral part; along the road only at junctions and curves).\n\n"
+                   "| trajectory | logs | mean | median | rmse | std | max | along rmse | lateral rmse |\n"
+                   "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  forEachRow(s, [&](const char* name, const ErrorStats& e, const EvalSummary::RoadSplit& split) {
     md += std::string("| ") + name + " | " + std::to_string(e.count);
-    for (double v : {e.mean, e.median, e.rmse, e.std, e.max}) md += " | " + (e.count ? number(v, 3) : "n/a");
+    for (double v : {e.mean, e.median, e.rmse, e.std, e.max, split.along, split.lateral}) md += " | " + (e.count ? number(v, 3) : "n/a");
     md += " |\n";
   });
   if (s.optimized) md += calibrationMarkdown(s);
@@ -146,12 +151,13 @@ std::string summaryMarkdown(const EvalSummary& s) {
 }
 
 std::string summaryCsv(const EvalSummary& s) {
-  std::string csv = csvRow({"trajectory", "logs", "failed_logs", "mean_m", "median_m", "rmse_m", "std_m", "max_m", "averaging"});
-  forEachRow(s, [&](const char* name, const ErrorStats& e) {
+  std::string csv = csvRow({"trajectory", "logs", "failed_logs", "mean_m", "median_m", "rmse_m", "std_m", "max_m",
+                            "along_rmse_m", "lateral_rmse_m", "averaging"});
+  forEachRow(s, [&](const char* name, const ErrorStats& e, const EvalSummary::RoadSplit& split) {
     // Over no log there is no average: empty fields, which CSV readers take as missing values.
     const auto stat = [&](double v) { return e.count ? number(v) : std::string(); };
     csv += csvRow({name, std::to_string(e.count), std::to_string(s.failed), stat(e.mean), stat(e.median), stat(e.rmse),
-                   stat(e.std), stat(e.max),
+                   stat(e.std), stat(e.max), stat(split.along), stat(split.lateral),
                    e.count ? "mean over logs of each log's per-sweep ATE statistic" : "no log went through"});
   });
   return csv;

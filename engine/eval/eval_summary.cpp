@@ -14,6 +14,16 @@ void accumulate(ErrorStats& sum, const ErrorStats& s) {
   sum.max += s.max;
 }
 
+void accumulate(EvalSummary::RoadSplit& sum, const AteResult& ate) {
+  sum.along += ate.along.rmse;
+  sum.lateral += ate.lateral.rmse;
+}
+
+EvalSummary::RoadSplit averaged(EvalSummary::RoadSplit sum, size_t count) {
+  if (count == 0) return sum;
+  return {sum.along / double(count), sum.lateral / double(count)};
+}
+
 ErrorStats averaged(ErrorStats sum) {
   if (sum.count == 0) return sum;
   const double n = double(sum.count);
@@ -37,8 +47,14 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
       ++s.failed;
       continue;
     }
-    if (log.odometry) accumulate(odometry, log.odometry->ate.translation);
-    if (log.optimized) accumulate(optimized, log.optimized->ate.translation);
+    if (log.odometry) {
+      accumulate(odometry, log.odometry->ate.translation);
+      accumulate(s.odometrySplit, log.odometry->ate);
+    }
+    if (log.optimized) {
+      accumulate(optimized, log.optimized->ate.translation);
+      accumulate(s.optimizedSplit, log.optimized->ate);
+    }
     priors.insert(priors.end(), log.priorErrors.begin(), log.priorErrors.end());
     if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {
       const double ratio = log.optimized->ate.translation.rmse / log.odometry->ate.translation.rmse;
@@ -48,6 +64,8 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
   }
   s.priors = calibrateMatches(priors);
   s.odometry = averaged(odometry);
+  s.odometrySplit = averaged(s.odometrySplit, odometry.count);
+  s.optimizedSplit = averaged(s.optimizedSplit, optimized.count);
   if (optimized.count > 0) s.optimized = averaged(optimized);
   return s;
 }

@@ -28,9 +28,14 @@ struct LogEvaluation {
 // The paper's table over a batch: each ATE statistic (mean, median, rmse, std, max) is the average
 // over the logs that went through of that log's per-sweep statistic; `count` is how many logs.
 struct EvalSummary {
+  // The ATE RMSE along and across the road, each the average over the logs of that log's RMSE.
+  struct RoadSplit {
+    double along = 0, lateral = 0;
+  };
   size_t logs = 0, failed = 0;
   ErrorStats odometry;
   std::optional<ErrorStats> optimized;  // when any successful log has an optimised trajectory
+  RoadSplit odometrySplit, optimizedSplit;
   // With priors: every log's priors pooled, and the logs whose ATE RMSE the priors made more than
   // 10 % worse than the odometry's (the largest optimised / odometry ratio among all).
   MatchCalibration priors;

@@ -29,6 +29,7 @@ json trajectoryJson(const TrajectoryEvaluation& e) {
           {"path_length_m", e.pathLength},
           {"ate_translation_m", statsJson(e.ate.translation)},
           {"ate_rotation_deg", statsJson(e.ate.rotationDeg)},
+          {"ate_along_m", statsJson(e.ate.along)},
           {"ate_lateral_m", statsJson(e.ate.lateral)},
           {"rpe_10m", rpeJson(e.rpe10)},
           {"rpe_100m", rpeJson(e.rpe100)}};
@@ -89,6 +90,7 @@ class Reader {
     e.pathLength = number(t, "path_length_m", where);
     e.ate.translation = stats(t, "ate_translation_m", where);
     e.ate.rotationDeg = stats(t, "ate_rotation_deg", where);
+    e.ate.along = stats(t, "ate_along_m", where);
     e.ate.lateral = stats(t, "ate_lateral_m", where);
     e.rpe10 = rpe(t, "rpe_10m", where);
     e.rpe100 = rpe(t, "rpe_100m", where);

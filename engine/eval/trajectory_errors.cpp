@@ -11,10 +11,11 @@ namespace {
 double angleDeg(const SE3& T) { return Eigen::AngleAxisd(T.rotation()).angle() * 180.0 / M_PI; }
 double yawDeg(const SE3& T) { return std::atan2(T.rotation()(1, 0), T.rotation()(0, 0)) * 180.0 / M_PI; }
 
-double lateralOffset(const SE3& gt, const SE3& est) {
+// |along|, |lateral|: the horizontal offset of est from gt in gt's heading.
+Eigen::Vector2d horizontalOffset(const SE3& gt, const SE3& est) {
   const double yaw = std::atan2(gt.rotation()(1, 0), gt.rotation()(0, 0));
   const Eigen::Vector3d d = est.translation() - gt.translation();
-  return std::abs(-std::sin(yaw) * d.x() + std::cos(yaw) * d.y());
+  return Eigen::Vector2d(std::cos(yaw) * d.x() + std::sin(yaw) * d.y(), -std::sin(yaw) * d.x() + std::cos(yaw) * d.y()).cwiseAbs();
 }
 
 }  // namespace
@@ -67,10 +68,13 @@ AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<
     const SE3 E = gt[i].inverse() * est[i];
     r.translationErrors.push_back(E.translation().norm());
     r.rotationErrorsDeg.push_back(angleDeg(E));
-    r.lateralErrors.push_back(lateralOffset(gt[i], est[i]));
+    const Eigen::Vector2d offset = horizontalOffset(gt[i], est[i]);
+    r.alongErrors.push_back(offset.x());
+    r.lateralErrors.push_back(offset.y());
   }
   r.translation = errorStats(r.translationErrors);
   r.rotationDeg = errorStats(r.rotationErrorsDeg);
+  r.along = errorStats(r.alongErrors);
   r.lateral = errorStats(r.lateralErrors);
   return r;
 }

@@ -23,11 +23,13 @@ struct AssociatedPoses {
 AssociatedPoses associateByTime(const PoseTrajectory& gt, const PoseTrajectory& estimate);
 
 // Absolute trajectory error as in the paper: E_i = Q_i^-1 P_i, translation error |t(E_i)| (metres)
-// and rotation angle of E_i (degrees) per frame, after the alignment. The lateral error is the
-// horizontal offset of P_i from Q_i across Q_i's heading (yaw), so roll and altitude do not enter.
+// and rotation angle of E_i (degrees) per frame, after the alignment. The along and lateral errors
+// are the horizontal offset of P_i from Q_i along and across Q_i's heading (yaw), so roll and
+// altitude do not enter: the drivable area sees the lateral part, and along the road only where
+// its shape changes (junctions, curves).
 struct AteResult {
-  std::vector<double> translationErrors, rotationErrorsDeg, lateralErrors;
-  ErrorStats translation, rotationDeg, lateral;
+  std::vector<double> translationErrors, rotationErrorsDeg, alongErrors, lateralErrors;
+  ErrorStats translation, rotationDeg, along, lateral;
 };
 AteResult absoluteTrajectoryError(const std::vector<SE3>& gt, const std::vector<SE3>& alignedEstimate);
 

@@ -40,6 +40,7 @@ json rpeJson(const RpeResult& r) {
 json evaluationJson(const TrajectoryEvaluation& e) {
   return {{"alignment", e.label}, {"scale", e.scale}, {"path_length_m", e.pathLength},
           {"ate_translation_m", statsJson(e.ate.translation)}, {"ate_rotation_deg", statsJson(e.ate.rotationDeg)},
+          {"ate_along_m", statsJson(e.ate.along)},
           {"ate_lateral_m", statsJson(e.ate.lateral)},
           {"rpe_10m", rpeJson(e.rpe10)}, {"rpe_100m", rpeJson(e.rpe100)}};
 }

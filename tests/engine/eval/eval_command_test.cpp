@@ -300,7 +300,7 @@ TEST(EvalCommandAllFailed, TablesSayNoLogWentThrough) {
   EXPECT_NE(r.out.find("n/a"), std::string::npos) << r.out;
   const auto table = split(test::readFileText(dir / "out" / "table.csv"), '\n');
   ASSERT_EQ(table.size(), 2u);
-  EXPECT_EQ(table[1], "odometry,0,2,,,,,,no log went through");
+  EXPECT_EQ(table[1], "odometry,0,2,,,,,,,,no log went through");
   EXPECT_TRUE(fs::exists(dir / "out" / "rmse_boxplot.png"));
 }
 

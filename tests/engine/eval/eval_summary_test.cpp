@@ -12,6 +12,7 @@ namespace {
 TrajectoryEvaluation evaluation(double mean, double median, double rmse, double std, double max) {
   TrajectoryEvaluation e;
   e.ate.translation = {.count = 100, .mean = mean, .median = median, .rmse = rmse, .std = std, .max = max};
+  e.ate.along.rmse = rmse / 4;
   e.ate.lateral.rmse = rmse / 2;
   e.pathLength = 80;
   e.rpe10 = {.length = 10, .segments = 5, .translationPercent = 0.5};
@@ -62,6 +63,9 @@ TEST(EvalSummary, AveragesEachStatisticOverTheLogsThatWentThrough) {
   ASSERT_TRUE(s.optimized.has_value());
   EXPECT_EQ(s.optimized->count, 3u);
   EXPECT_DOUBLE_EQ(s.optimized->rmse, 0.3 * (1 + 2 + 6) / 3.0);
+  EXPECT_DOUBLE_EQ(s.odometrySplit.along, 3.0 / 4 * (1 + 2 + 6) / 3.0);
+  EXPECT_DOUBLE_EQ(s.odometrySplit.lateral, 3.0 / 2 * (1 + 2 + 6) / 3.0);
+  EXPECT_DOUBLE_EQ(s.optimizedSplit.lateral, 0.3 / 2 * (1 + 2 + 6) / 3.0);
 }
 
 TEST(EvalSummary, WithoutPriorsOnlyTheOdometryAndAllFailedGivesNothing) {
@@ -83,12 +87,12 @@ TEST(EvalReport, PerLogCsvHasARowPerLogAndQuotesTheError) {
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].rfind("log_id,path,sweeps,skipped_sweeps,path_length_m,odometry_ate_mean_m,", 0), 0u);
   EXPECT_NE(rows[0].find(",optimized_ate_rmse_m,"), std::string::npos);
-  EXPECT_EQ(rows[1].rfind("a,/logs/a,100,1,80.000,1.000000,2.000000,3.000000,4.000000,5.000000,1.500000,0.500000,,"
-                          "0.100000,0.200000,0.300000,0.400000,0.500000,0.150000,0.500000,,3,0,0,,,,,,,4.50,", 0), 0u)
+  EXPECT_EQ(rows[1].rfind("a,/logs/a,100,1,80.000,1.000000,2.000000,3.000000,4.000000,5.000000,0.750000,1.500000,0.500000,,"
+                          "0.100000,0.200000,0.300000,0.400000,0.500000,0.075000,0.150000,0.500000,,3,0,0,,,,,,,4.50,", 0), 0u)
       << rows[1];
-  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
+  EXPECT_EQ(rows[2], "b,/logs/b,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"b/city_SE3_egovehicle.feather: file too short, \"\"12\"\" bytes\"");
   // Without priors the optimised columns, the match counts and the prior calibration are empty.
-  EXPECT_NE(rows[3].find(",0.500000,,,,,,,,,,,,,,,,,,,4.50,"), std::string::npos) << rows[3];
+  EXPECT_NE(rows[3].find(",0.500000,,,,,,,,,,,,,,,,,,,,4.50,"), std::string::npos) << rows[3];
   const size_t columns = std::count(rows[0].begin(), rows[0].end(), ',');
   EXPECT_EQ(std::count(rows[1].begin(), rows[1].end(), ','), long(columns));
   EXPECT_EQ(std::count(rows[3].begin(), rows[3].end(), ','), long(columns));
@@ -98,14 +102,14 @@ TEST(EvalReport, TablesStateTheAveraging) {
   const EvalSummary s = summarizeLogs({okLog("a", 1, true), failedLog("b", "e"), okLog("c", 2, true)});
   const std::string md = summaryMarkdown(s);
   EXPECT_NE(md.find("average over the 2 logs that went through (of 3; 1 failed)"), std::string::npos) << md;
-  EXPECT_NE(md.find("| odometry | 2 | 1.500 | 3.000 | 4.500 | 6.000 | 7.500 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| with HD-map priors | 2 | 0.150 | 0.300 | 0.450 | 0.600 | 0.750 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| odometry | 2 | 1.500 | 3.000 | 4.500 | 6.000 | 7.500 | 1.125 | 2.250 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| with HD-map priors | 2 | 0.150 | 0.300 | 0.450 | 0.600 | 0.750 | 0.112 | 0.225 |"), std::string::npos) << md;
   EXPECT_NE(summaryMarkdown(summarizeLogs({okLog("a", 1, true)})).find("over the 1 log that went through (of 1; 0 failed)"),
             std::string::npos);
   const auto rows = lines(summaryCsv(s));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0], "trajectory,logs,failed_logs,mean_m,median_m,rmse_m,std_m,max_m,averaging");
-  EXPECT_EQ(rows[1].rfind("odometry,2,1,1.500000,3.000000,4.500000,6.000000,7.500000,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[0], "trajectory,logs,failed_logs,mean_m,median_m,rmse_m,std_m,max_m,along_rmse_m,lateral_rmse_m,averaging");
+  EXPECT_EQ(rows[1].rfind("odometry,2,1,1.500000,3.000000,4.500000,6.000000,7.500000,1.125000,2.250000,", 0), 0u) << rows[1];
 }
 
 // Every log failed: no average is 0.000; table.md says no log went through and shows n/a,
@@ -114,11 +118,11 @@ TEST(EvalReport, WhenNoLogWentThroughTheTablesShowNoAverage) {
   const EvalSummary s = summarizeLogs({failedLog("a", "x: broken"), failedLog("b", "y: broken")});
   const std::string md = summaryMarkdown(s);
   EXPECT_NE(md.find("No log went through (2 of 2 failed; per_log.csv has each one's error)"), std::string::npos) << md;
-  EXPECT_NE(md.find("| odometry | 0 | n/a | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| odometry | 0 | n/a | n/a | n/a | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
   EXPECT_EQ(md.find("0.000"), std::string::npos) << md;
   const auto rows = lines(summaryCsv(s));
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[1], "odometry,0,2,,,,,,no log went through");
+  EXPECT_EQ(rows[1], "odometry,0,2,,,,,,,,no log went through");
 }
 
 TEST(EvalReport, BoxPlotOfTheSuccessfulLogs) {

@@ -21,6 +21,7 @@ TrajectoryEvaluation evaluation(double k) {
   e.pathLength = 81.23456789012345 * k;
   e.ate.translation = {.count = 97, .mean = 0.1234567890123457 * k, .median = 0.1 / 3 * k, .rmse = std::sqrt(2.0) * k / 10,
                        .std = 1e-17 * k, .max = std::acos(-1.0) * k};
+  e.ate.along.rmse = 0.9 / 7 * k;
   e.ate.lateral.rmse = 0.7 / 3 * k;
   e.rpe10 = {.length = 10, .segments = 7, .translationPercent = 2.0 / 3 * k};
   e.rpe100 = {.length = 100, .segments = 0};

@@ -63,9 +63,13 @@ TEST(Ate, HandComputedPerFrameErrors) {
   EXPECT_NEAR(r.lateralErrors[1], 0.0, 1e-12);
   EXPECT_NEAR(r.lateralErrors[2], 1.0, 1e-12);
   EXPECT_NEAR(r.lateral.rmse, std::sqrt(2.0 / 3), 1e-12);
+  // Along: frame 2's offset is along its heading.
+  EXPECT_NEAR(r.alongErrors[0], 0.0, 1e-12);
+  EXPECT_NEAR(r.alongErrors[1], 0.0, 1e-12);
+  EXPECT_NEAR(r.alongErrors[2], 0.0, 1e-12);
 }
 
-TEST(Ate, LateralIsHorizontalAcrossTheHeading) {
+TEST(Ate, AlongAndLateralAreHorizontalAlongAndAcrossTheHeading) {
   // A rolled and pitched ground-truth pose heading 30 deg: an altitude error has no lateral part, a
   // horizontal offset perpendicular to the heading is all lateral, one along it none.
   SE3 gt = pose(5, 5, 1, M_PI / 6);
@@ -81,6 +85,10 @@ TEST(Ate, LateralIsHorizontalAcrossTheHeading) {
   EXPECT_NEAR(r.lateralErrors[0], 0.0, 1e-12);
   EXPECT_NEAR(r.lateralErrors[1], 0.4, 1e-12);
   EXPECT_NEAR(r.lateralErrors[2], 0.0, 1e-12);
+  EXPECT_NEAR(r.alongErrors[0], 0.0, 1e-12);
+  EXPECT_NEAR(r.alongErrors[1], 0.0, 1e-12);
+  EXPECT_NEAR(r.alongErrors[2], 0.9, 1e-12);
+  EXPECT_NEAR(r.along.rmse, 0.9 / std::sqrt(3.0), 1e-12);
 }
 
 TEST(Alignment, EachModeRecoversItsTransform) {
