@@ -36,6 +36,11 @@ struct PosePriorOptions {
   // A match goes into the graph only if its innovation against the prediction is below this quantile
   // of chi-square (engine/pipeline/innovation_gate.h); 0: every match that is not rejected goes in.
   double innovationGateProbability = 0.99;
+  // This many consecutive gated priors that agree with one another (each passes the gate of a
+  // challenger prediction started at the first of them, without the graph's) say the prediction is
+  // what went wrong (an odometry failure its covariance did not show): they all go in and the gate
+  // follows them. 0: never.
+  int reanchorPriors = 3;
 };
 
 // The prior's information over the planar pose (x, y, yaw), the order of a match's.

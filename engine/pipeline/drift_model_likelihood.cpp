@@ -48,6 +48,13 @@ void DriftModelLikelihood::observe(const PosePrior& prior) {
   }
 }
 
+void DriftModelLikelihood::restartAt(const PosePrior& prior) {
+  for (PlanarKalman& f : filters_) {
+    f.widen(kForgottenPose);
+    f.update(f.innovation(prior));
+  }
+}
+
 PoseGraphOptions DriftModelLikelihood::likeliest() const {
   const auto best = std::max_element(logLikelihood_.begin(), logLikelihood_.end());
   return candidate(size_t(best - logLikelihood_.begin()));

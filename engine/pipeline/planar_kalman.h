@@ -10,6 +10,10 @@ namespace hdprior {
 // The upper `probability` quantile of the chi-square distribution with 1-3 degrees of freedom.
 double chiSquareQuantile(double probability, int dof);
 
+// A pose covariance that forgets the mean (100 m, 90 deg): PlanarKalman::widen by it, and the next
+// prior alone sets what it observes.
+inline const Eigen::Matrix3d kForgottenPose = Eigen::Vector3d(1e4, 1e4, 2.4674011002723395).asDiagonal();  // (pi/2)^2
+
 // A Kalman filter over the planar pose (x, y, yaw, city frame) of the latest keyframe: odometry steps
 // move it and grow its covariance, HD-map priors (possibly singular information) correct it. The prior
 // stage runs one to gate priors against the graph's prediction (InnovationGate mode: the mean is set
@@ -27,6 +31,8 @@ class PlanarKalman {
   explicit PlanarKalman(const Eigen::Vector3d& start = Eigen::Vector3d::Zero(), double mapErrorLength = 0.0);
 
   void setMean(const Eigen::Vector3d& mean) { state_.head<3>() = mean; }
+  // The pose's covariance grown by `poseCovariance` (x, y, yaw): what the mean says is trusted less.
+  void widen(const Eigen::Matrix3d& poseCovariance) { covariance_.topLeftCorner<3, 3>() += poseCovariance; }
 
   // The odometry step previousTThis, whose information is over the between-factor's residual
   // [rotation, translation].

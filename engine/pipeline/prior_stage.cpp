@@ -57,17 +57,24 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
   return out;
 }
 
-void PriorStage::gatePrior(KeyframeMatch& m) {
-  const PlanarKalman::Innovation t = gate_.innovation(m.prior);
-  m.innovationChi2 = t.chi2;
-  const double p = config_.prior.innovationGateProbability;
-  if (p > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(p, t.dof)) {
-    m.hasPrior = false;
-    m.gated = true;
-    return;
+bool PriorStage::gatePrior(KeyframeMatch& m) {
+  const InnovationGate::Verdict v = gate_.judge(m.keyframe, m.prior);
+  m.innovationChi2 = v.chi2;
+  m.gated = !v.admitted;
+  m.hasPrior = v.admitted;
+  if (!v.admitted) return false;
+  if (driftModels_) {
+    if (v.reanchored.empty()) {
+      driftModels_->observe(m.prior);
+    } else {
+      driftModels_->restartAt(m.prior);
+    }
   }
-  gate_.update(t);
-  if (driftModels_) driftModels_->observe(m.prior);
+  for (size_t k : v.reanchored) {
+    matches_.at(k).hasPrior = true;
+    matches_.at(k).gated = false;
+  }
+  return !v.reanchored.empty();
 }
 
 void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
@@ -80,11 +87,11 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   m.predicted = predictedPose(kf);
   const Matrix6d odometryInfo = odometryInformation(kf.relativeCovariance, kf.previousTThis, config_.graph);
   if (graph_->size() == 0) {
-    gate_ = PlanarKalman(planarPose(m.predicted), config_.graph.mapErrorLength);
+    gate_ = InnovationGate(planarPose(m.predicted), config_.graph.mapErrorLength, config_.prior.innovationGateProbability,
+                           config_.prior.reanchorPriors);
     if (config_.graph.estimateDriftModel) driftModels_.emplace(config_.graph, planarPose(m.predicted));
   } else {
-    gate_.setMean(planarPose(graph_->pose(graph_->size() - 1)));
-    gate_.predict(kf.previousTThis, odometryInfo);
+    gate_.predict(planarPose(graph_->pose(graph_->size() - 1)), kf.previousTThis, odometryInfo);
     if (driftModels_) driftModels_->step(kf);
   }
 
@@ -96,9 +103,10 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   start = std::chrono::steady_clock::now();
   m.match = matcher_->match(points.road, planarPose(m.predicted), points.curb);
   m.hasPrior = m.match.status != MatchStatus::Rejected;
+  bool reanchored = false;
   if (m.hasPrior) {
     m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);
-    gatePrior(m);
+    reanchored = gatePrior(m);
   }
   times_.matchS += secondsSince(start);
 
@@ -108,9 +116,10 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
     graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInfo);
   }
   if (m.hasPrior) graph_->addPrior(k, m.prior);
+  matches_.push_back(std::move(m));
+  if (reanchored) rebuild(odometry);  // the run's earlier priors go in, in route order (the map error field's)
   graph_->solve(true);
   times_.graphS += secondsSince(start);
-  matches_.push_back(std::move(m));
 }
 
 SolveSummary PriorStage::finish(const Odometry& odometry) {

@@ -15,6 +15,7 @@
 #include "engine/match/match_result.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/drift_model_likelihood.h"
+#include "engine/pipeline/innovation_gate.h"
 #include "engine/pipeline/planar_kalman.h"
 
 namespace hdprior {
@@ -83,7 +84,8 @@ class PriorStage {
 
  private:
   SE3 predictedPose(const Keyframe& keyframe) const;
-  void gatePrior(KeyframeMatch& m);
+  // The innovation gate on m's prior; true when it let in earlier gated priors with it.
+  bool gatePrior(KeyframeMatch& m);
   void rebuild(const Odometry& odometry);
 
   const HdMap& map_;
@@ -92,7 +94,7 @@ class PriorStage {
   bool givenPoses_;
   std::unique_ptr<MapMatcher> matcher_;
   std::unique_ptr<PoseGraph> graph_;
-  PlanarKalman gate_;  // the graph's prediction and its covariance: gates the priors
+  InnovationGate gate_;
   std::optional<DriftModelLikelihood> driftModels_;
   std::vector<KeyframeMatch> matches_;
   PriorStageTimes times_;

@@ -1,0 +1,51 @@
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/geom/se3.h"
+#include "engine/graph/odometry_information.h"
+#include "engine/graph/pose_prior.h"
+#include "engine/pipeline/planar_kalman.h"
+
+namespace hdprior {
+
+// Lets a prior into the graph only if it agrees with the graph's prediction: its innovation under
+// the prediction's covariance (a PlanarKalman over the latest keyframe) plus its own is below the
+// `probability` chi-square quantile.
+//
+// A gate trusts its prediction, and an odometry failure its covariance did not show (a turn where
+// the lidar odometry slipped metres) would shut out every right prior after it. So the gated priors
+// are followed too: a challenger prediction starts at the first gated prior, without the graph's
+// pose (100 m, 90 deg), and is carried by the odometry; while the next gated priors pass its gate
+// they form one run. `reanchorPriors` of them in a run agree with one another and not with the
+// prediction: the prediction is what went wrong, the gate widens by the disagreement and the whole
+// run goes in.
+class InnovationGate {
+ public:
+  InnovationGate() = default;
+  InnovationGate(const Eigen::Vector3d& start, double mapErrorLength, double probability, int reanchorPriors);
+
+  // To the next keyframe: the graph's pose at the latest one, then the odometry step.
+  void predict(const Eigen::Vector3d& latestPose, const SE3& previousTThis, const Matrix6d& stepInformation);
+
+  struct Verdict {
+    bool admitted = false;
+    double chi2 = 0.0;                // against the graph's prediction
+    std::vector<size_t> reanchored;   // admitted: the earlier gated priors of the run that go in with it
+  };
+  Verdict judge(size_t keyframe, const PosePrior& prior);
+
+ private:
+  bool followGatedRun(size_t keyframe, const PosePrior& prior, Verdict& verdict);
+
+  PlanarKalman gate_;
+  std::optional<PlanarKalman> challenger_;
+  std::vector<size_t> run_;  // keyframes of the gated priors that agree with the challenger
+  double probability_ = 0.99;
+  int reanchorPriors_ = 3;
+};
+
+}  // namespace hdprior

@@ -1,0 +1,78 @@
+#include "engine/pipeline/innovation_gate.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <vector>
+
+namespace hdprior {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+Matrix6d stepInformation() {
+  Eigen::Matrix<double, 6, 1> v;
+  v << 0.1 * kDeg, 0.1 * kDeg, 0.1 * kDeg, 0.01, 0.01, 0.01;
+  return v.cwiseAbs2().cwiseInverse().asDiagonal();
+}
+
+SE3 forward(double metres) {
+  SE3 T = SE3::Identity();
+  T.translation().x() = metres;
+  return T;
+}
+
+// A lateral prior (y observed, sigma 0.1 m) at (x, y), heading +x.
+PosePrior lateralPrior(double x, double y) {
+  PosePrior p;
+  p.pose.translation() = Eigen::Vector3d(x, y, 0.0);
+  p.information(2, 2) = 1.0 / (0.1 * 0.1);  // order yaw, x, y, z
+  return p;
+}
+
+// A straight drive of 2 m keyframes. The graph's pose at keyframe k is (2k, graphY(k)); the prior at
+// k says y = priorY(k). Returns each keyframe's verdict (keyframe 0 is the start, no prior).
+std::vector<InnovationGate::Verdict> drive(int keyframes, int reanchorPriors, double (*graphY)(int), double (*priorY)(int)) {
+  InnovationGate gate(Eigen::Vector3d::Zero(), 0.0, 0.99, reanchorPriors);
+  std::vector<InnovationGate::Verdict> verdicts(1);
+  for (int k = 1; k < keyframes; ++k) {
+    gate.predict(Eigen::Vector3d(2.0 * (k - 1), graphY(k - 1), 0.0), forward(2.0), stepInformation());
+    verdicts.push_back(gate.judge(size_t(k), lateralPrior(2.0 * k, priorY(k))));
+  }
+  return verdicts;
+}
+
+// The odometry slips 2 m sideways after keyframe 4 and the graph, with every prior gated, stays there.
+double slipAfterFour(int k) { return k >= 5 ? 2.0 : 0.0; }
+double onTheRoad(int) { return 0.0; }
+
+TEST(InnovationGate, AgreeingPriorsOutvoteAPredictionThatSlipped) {
+  const auto v = drive(12, 3, slipAfterFour, onTheRoad);
+  for (int k = 1; k <= 5; ++k) EXPECT_TRUE(v[k].admitted) << k;
+  // Keyframes 6 and 7 are gated (the prediction is 2 m off, 20 sigma); the third of the run agrees
+  // with them and all three go in.
+  EXPECT_FALSE(v[6].admitted);
+  EXPECT_GT(v[6].chi2, 100.0);
+  EXPECT_FALSE(v[7].admitted);
+  EXPECT_TRUE(v[8].admitted);
+  EXPECT_EQ(v[8].reanchored, (std::vector<size_t>{6, 7}));
+}
+
+TEST(InnovationGate, WithoutReanchoringTheSlipShutsEveryPriorOut) {
+  const auto v = drive(12, 0, slipAfterFour, onTheRoad);
+  for (int k = 6; k < 12; ++k) EXPECT_FALSE(v[k].admitted) << k;
+}
+
+// Wrong priors that disagree with one another (a plateau the Newton path wanders along) never form a run.
+double wandering(int k) { return k < 6 ? 0.0 : (k % 2 ? 2.0 : -2.0); }
+
+TEST(InnovationGate, PriorsThatDisagreeWithOneAnotherStayOut) {
+  const auto v = drive(16, 3, onTheRoad, wandering);
+  for (int k = 6; k < 16; ++k) {
+    EXPECT_FALSE(v[k].admitted) << k;
+    EXPECT_TRUE(v[k].reanchored.empty());
+  }
+}
+
+}  // namespace
+}  // namespace hdprior
