@@ -115,9 +115,9 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   if (k > 0) {
     graph_->addOdometry(k - 1, k, kf.previousTThis, odometryInfo);
   }
-  if (m.hasPrior) graph_->addPrior(k, m.prior);
+  if (m.hasPrior && !reanchored) graph_->addPrior(k, m.prior);
   matches_.push_back(std::move(m));
-  if (reanchored) rebuild(odometry);  // the run's earlier priors go in, in route order (the map error field's)
+  if (reanchored) rebuild(odometry);  // the run's priors and this one go in, in route order (the map error field's)
   graph_->solve(true);
   times_.graphS += secondsSince(start);
 }
