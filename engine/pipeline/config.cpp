@@ -192,7 +192,8 @@ Sections sectionsOf(Config& c) {
         {"given_odometry_rotation_sigma_deg_per_m", &c.graph.givenOdometryRotationSigmaDegPerM, 0, 180},
         {"odometry_covariance", &c.graph.odometryCovariance},
         {"map_error_length", &c.graph.mapErrorLength, 0, 1e6},
-        {"estimate_drift_model", &c.graph.estimateDriftModel}}},
+        {"estimate_drift_model", &c.graph.estimateDriftModel},
+        {"drift_model_margin_nats", &c.graph.driftModelMarginNats, 0, 1e6}}},
       {"sweeps", {{"max_unreadable_share", &c.maxUnreadableSweepShare, 0, 1}}},
   };
 }

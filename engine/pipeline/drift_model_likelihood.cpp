@@ -56,8 +56,13 @@ void DriftModelLikelihood::restartAt(const PosePrior& prior) {
 }
 
 PoseGraphOptions DriftModelLikelihood::likeliest() const {
-  const auto best = std::max_element(logLikelihood_.begin(), logLikelihood_.end());
-  return candidate(size_t(best - logLikelihood_.begin()));
+  const double best = *std::max_element(logLikelihood_.begin(), logLikelihood_.end());
+  size_t pick = candidates_.size();
+  for (size_t i = 0; i < candidates_.size(); ++i) {
+    if (logLikelihood_[i] < best - configured_.driftModelMarginNats) continue;
+    if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
+  }
+  return candidate(pick);
 }
 
 }  // namespace hdprior

@@ -126,7 +126,8 @@ json driftModelJson(const PoseGraphOptions& g) {
           {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
           {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
           {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}, {"odometry_covariance", g.odometryCovariance},
-          {"estimated", g.estimateDriftModel}, {"map_error_length_m", g.mapErrorLength}};
+          {"estimated", g.estimateDriftModel}, {"margin_nats", g.driftModelMarginNats},
+          {"map_error_length_m", g.mapErrorLength}};
 }
 
 // Where the odometry's poses came from: the built-in lidar odometry or a trajectory file.

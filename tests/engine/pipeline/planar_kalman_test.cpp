@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -102,8 +103,9 @@ TEST(PlanarKalman, TheGivenStartAcceptsOnlyMatchesWithinTheirOwnSigma) {
 // Odometry that turns 0.02 deg too far every 2 m (1 deg over 100 m), priors that are right with
 // 0.1 m noise: the likeliest model is one loose enough to let the priors pull the drift out; with an
 // odometry that is right, the tightest.
-PoseGraphOptions likeliestModel(double yawBiasPerStep) {
+DriftModelLikelihood driftRun(double yawBiasPerStep, double marginNats = 0.0) {
   PoseGraphOptions configured;  // 1e-4 per metre
+  configured.driftModelMarginNats = marginNats;
   DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
   Keyframe kf;
   kf.previousTThis = forward(2.0, yawBiasPerStep);
@@ -115,8 +117,10 @@ PoseGraphOptions likeliestModel(double yawBiasPerStep) {
     truth.x() += 2.0;
     likelihood.observe(lateralPrior(truth.x(), noise[k % 5], 0.1, 0.0));
   }
-  return likelihood.likeliest();
+  return likelihood;
 }
+
+PoseGraphOptions likeliestModel(double yawBiasPerStep) { return driftRun(yawBiasPerStep).likeliest(); }
 
 TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
   const PoseGraphOptions configured;
@@ -125,6 +129,20 @@ TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
   EXPECT_EQ(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);  // never below the configured
   EXPECT_EQ(drifting.odometryTranslationSigmaPerM / configured.odometryTranslationSigmaPerM,
             drifting.odometryRotationSigmaDegPerM / configured.odometryRotationSigmaDegPerM);
+}
+
+// A looser model is taken only if it beats the configured one by more than the margin; a drift the
+// priors show clearly still gets through a margin of 2 nats.
+TEST(DriftModelLikelihood, AMarginKeepsTheConfiguredModelWhereALooserOneIsBarelyLikelier) {
+  const PoseGraphOptions configured;
+  const double kWeakBias = 0.002 * kDeg;  // 30x is 0.4 nats likelier than 1x
+  const DriftModelLikelihood weak = driftRun(kWeakBias);
+  const double gain = *std::max_element(weak.logLikelihoods().begin(), weak.logLikelihoods().end()) - weak.logLikelihoods()[0];
+  ASSERT_GT(gain, 0.0);
+  ASSERT_GT(weak.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_EQ(driftRun(kWeakBias, gain * 1.01).likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_GT(driftRun(kWeakBias, gain * 0.99).likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  EXPECT_GE(driftRun(0.02 * kDeg, 2.0).likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
 }
 
 // An odometry sure of itself (0.15 deg / 100 m) along +x and lateral priors that all sit 0.25 m to the left: the map's own error,
