@@ -14,7 +14,7 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxCamber >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
+  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxCamber >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.gutterRise >= 0 && o.gutterWindow > 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
     throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap, seed or lane settings out of range (laneObjectHeight must be above laneStep)");
   }
 }
@@ -72,7 +72,7 @@ class RingWalk {
       if (visited_[k]) return;
       const Eigen::Vector3d& b = points_[members_[k]];
       if ((b.head<2>() - points_[members_[path.back()]].head<2>()).norm() > o_.maxGap) return;
-      if (!agrees(b, path)) {
+      if (!agrees(b, path) || climbsOutOfGutter(b, path)) {
         if (++failures > o_.maxSkipped) {
           // Ended by a height step, not a gap: the last road point lies at a curb.
           if (path.size() > 1) road[members_[path.back()]] = kCurbPoint;
@@ -101,6 +101,29 @@ class RingWalk {
       if (std::abs(b.z() - a.z() - slope * distance) > o_.maxStep + o_.stepPerMetre * distance) return false;
     }
     return true;
+  }
+
+  // b is gutterRise above the walk's lowest point within gutterWindow behind it, and a point of the
+  // walk before that low (within `window`) is gutterRise above it too: a V, b on its far side. The
+  // walk's heights are taken as the mean of three consecutive points, so that range noise (1-2 cm)
+  // does not make a V of its own.
+  bool climbsOutOfGutter(const Eigen::Vector3d& b, const std::vector<size_t>& path) const {
+    if (o_.gutterRise <= 0.0 || path.size() < 3) return false;
+    double low = b.z();
+    bool lowNear = true;
+    for (size_t j = path.size() - 1; j >= 2; --j) {
+      const Eigen::Vector3d& a = points_[members_[path[j]]];
+      const double distance = (b.head<2>() - a.head<2>()).norm();
+      if (distance > o_.window) break;
+      const double z = (a.z() + points_[members_[path[j - 1]]].z() + points_[members_[path[j - 2]]].z()) / 3.0;
+      if (z < low) {
+        low = z;
+        lowNear = distance <= o_.gutterWindow;
+      } else if (lowNear && z >= low + o_.gutterRise) {
+        return b.z() >= low + o_.gutterRise;
+      }
+    }
+    return false;
   }
 
   // The walk's height gain per metre over its last `window` metres, within +-maxCamber (a kerb's face

@@ -24,7 +24,15 @@ struct RoadPointOptions {
   double maxGap = 5.0;             // a longer gap along the ring ends the walk, metres
   double window = 3.0;             // the step test covers the walk's road points this far back
   int maxSkipped = 3;              // this many consecutive points off the road height end the walk
-  double seedHalfWidth = 1.5;      // seeds: ground points within this of the vehicle's x axis ...
+  // A road without a kerb, or with one lower than maxStep, still ends at its gutter: the lowest line
+  // of its cross-section, where the camber comes down and the verge goes up (gutters 2-5 cm deep). A
+  // point gutterRise above the walk's lowest point within gutterWindow behind it, where the walk came
+  // down into that low by gutterRise too, is past the gutter (0: off).
+  double gutterRise = 0.03;        // metres
+  double gutterWindow = 1.0;       // metres
+  // Seeds: ground points within this of the vehicle's x axis (its own width, about 1.9 m: a vehicle
+  // 0.3 m from a low kerb put 1.5 m seeds on the sidewalk, and whole rings were walked from there) ...
+  double seedHalfWidth = 1.0;
   double seedTolerance = 0.12;     // ... within this of groundZ ...
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
   // Seeds only as far along the lane as its height profile goes on without a kerb up (off: every

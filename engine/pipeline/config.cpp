@@ -106,6 +106,8 @@ Sections sectionsOf(Config& c) {
         {"max_gap", &rp.maxGap, 0, 1000},
         {"window", &rp.window, 0, 1000},
         {"max_skipped", &rp.maxSkipped, 0, 10000},
+        {"gutter_rise", &rp.gutterRise, 0, 10},
+        {"gutter_window", &rp.gutterWindow, 1e-3, 100},
         {"seed_half_width", &rp.seedHalfWidth, 0, 100},
         {"seed_tolerance", &rp.seedTolerance, 0, 10},
         {"seed_tolerance_per_metre", &rp.seedTolerancePerMetre, 0, 10},

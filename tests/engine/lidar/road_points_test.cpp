@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "engine/error.h"
@@ -106,6 +108,75 @@ TEST(RoadPoints, LaneSeedsEndAtTheKerbAcrossTheRoad) {
   const Labelled straight = scan({});
   const std::vector<uint8_t> g = segmentGround(straight.points);
   EXPECT_EQ(extractRoadPoints(straight.points, straight.rings, g, lane), extractRoadPoints(straight.points, straight.rings, g, everyLevel));
+}
+
+// One ring 10 m out over a road whose low kerb hides behind its gutter: the camber (2.9 %) comes down
+// to a gutter 4 cm deep at the edge (|y| = 5 m), a 4.5 cm lip brings the surface back to 0.5 cm above
+// the camber's line, and the verge rises at 1.1 %. Every point is ground.
+struct RingProfile {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<uint8_t> rings, ground;
+};
+
+RingProfile gutterRing() {
+  constexpr double kRange = 10.0, kEdge = 5.0, kRoadZ = -0.32;
+  RingProfile r;
+  for (double az = -1.2; az <= 1.2; az += 0.01) {
+    const double y = kRange * std::sin(az), ay = std::abs(y);
+    double z = kRoadZ - 0.029 * std::max(0.0, std::min(ay, kEdge) - 1.0);
+    if (ay <= kEdge && ay > kEdge - 0.4) z -= 0.04 * (ay - (kEdge - 0.4)) / 0.4;
+    if (ay > kEdge) z += 0.005 + 0.011 * (ay - kEdge);
+    r.points.emplace_back(kRange * std::cos(az), y, z);
+  }
+  r.rings.assign(r.points.size(), 0);
+  r.ground.assign(r.points.size(), 1);
+  return r;
+}
+
+TEST(RoadPoints, AKerbBehindItsGutterEndsTheRoadAtTheGutter) {
+  const RingProfile r = gutterRing();
+  RoadPointOptions withoutGutter;
+  withoutGutter.gutterRise = 0.0;
+  const std::vector<uint8_t> before = extractRoadPoints(r.points, r.rings, r.ground, withoutGutter);
+  const std::vector<uint8_t> after = extractRoadPoints(r.points, r.rings, r.ground);
+  size_t sidewalk = 0, sidewalkBefore = 0, sidewalkAfter = 0, road = 0, roadAfter = 0;
+  std::vector<double> curbs;
+  for (size_t i = 0; i < r.points.size(); ++i) {
+    const double ay = std::abs(r.points[i].y());
+    if (ay > 5.0) {
+      ++sidewalk;
+      sidewalkBefore += before[i] != 0;
+      sidewalkAfter += after[i] != 0;
+    } else {
+      ++road;
+      roadAfter += after[i] != 0;
+    }
+    if (after[i] == kCurbPoint) curbs.push_back(ay);
+  }
+  EXPECT_GT(double(sidewalkBefore) / double(sidewalk), 0.03);  // the step test alone lets part through
+  EXPECT_EQ(sidewalkAfter, 0u);
+  EXPECT_GT(double(roadAfter) / double(road), 0.95);
+  ASSERT_EQ(curbs.size(), 2u);  // one on each side, at the gutter
+  for (double y : curbs) EXPECT_NEAR(y, 5.0, 0.3);
+}
+
+TEST(RoadPoints, SeedsStayUnderTheVehiclesOwnWidth) {
+  // A narrow street driven 0.3 m from each kerb (7 cm: below the lane's 8 cm step, above the
+  // walk's 5 cm): seeds out to 1.5 m lie on the sidewalks and walk them as road.
+  test::Street street;
+  street.halfWidth = 1.3;
+  street.curb = 0.07;
+  street.car = false;
+  const Labelled l = scan(street);
+  const std::vector<uint8_t> ground = segmentGround(l.points);
+  RoadPointOptions wide, own;
+  wide.seedHalfWidth = 1.5;
+  own.seedHalfWidth = 1.0;
+  const auto fromWide = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground, wide), 3.0, 40.0);
+  const auto fromOwn = flaggedShare(l, extractRoadPoints(l.points, l.rings, ground, own), 3.0, 40.0);
+  EXPECT_GT(fromWide.at(Surface::Sidewalk), 0.2);
+  EXPECT_LT(fromOwn.at(Surface::Sidewalk), 0.02);
+  EXPECT_GT(fromOwn.at(Surface::Road), 0.9);
 }
 
 TEST(RoadPoints, PlanarPointsThinDeterministically) {
