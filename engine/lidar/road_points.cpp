@@ -109,13 +109,14 @@ class RingWalk {
   // does not make a V of its own.
   bool climbsOutOfGutter(const Eigen::Vector3d& b, const std::vector<size_t>& path) const {
     if (o_.gutterRise <= 0.0 || path.size() < 3) return false;
+    if (b.z() < lowestNear(b, path) + o_.gutterRise) return false;  // the usual case, in a third of the scan
     double low = b.z();
     bool lowNear = true;
     for (size_t j = path.size() - 1; j >= 2; --j) {
       const Eigen::Vector3d& a = points_[members_[path[j]]];
       const double distance = (b.head<2>() - a.head<2>()).norm();
       if (distance > o_.window) break;
-      const double z = (a.z() + points_[members_[path[j - 1]]].z() + points_[members_[path[j - 2]]].z()) / 3.0;
+      const double z = smoothedHeight(path, j);
       if (z < low) {
         low = z;
         lowNear = distance <= o_.gutterWindow;
@@ -124,6 +125,22 @@ class RingWalk {
       }
     }
     return false;
+  }
+
+  // The mean height of the walk's points j-2, j-1 and j.
+  double smoothedHeight(const std::vector<size_t>& path, size_t j) const {
+    return (points_[members_[path[j]]].z() + points_[members_[path[j - 1]]].z() + points_[members_[path[j - 2]]].z()) / 3.0;
+  }
+
+  // The lowest of the walk's smoothed heights within gutterWindow behind b.
+  double lowestNear(const Eigen::Vector3d& b, const std::vector<size_t>& path) const {
+    double low = b.z();
+    for (size_t j = path.size() - 1; j >= 2; --j) {
+      const Eigen::Vector3d& a = points_[members_[path[j]]];
+      if ((b.head<2>() - a.head<2>()).norm() > o_.gutterWindow) break;
+      low = std::min(low, smoothedHeight(path, j));
+    }
+    return low;
   }
 
   // The walk's height gain per metre over its last `window` metres, within +-maxCamber (a kerb's face
