@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -20,13 +21,51 @@ void validate(const RoadPointOptions& o) {
 }
 
 constexpr double kDenseSpacing = 0.5;  // metres between consecutive points of a ring
+constexpr double kOccluderHeight = 0.3;  // metres above the road: an object's side, higher than a kerb's face
+
+// The lowest non-ground return in each cell of a square grid around the vehicle: where the walk
+// meets a step, an object standing on it (a parked car's side, classed as ground near its foot)
+// tells the step from a kerb, above whose top nothing stands.
+class ObjectFloor {
+ public:
+  ObjectFloor(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ground, double range)
+      : side_(2 * long(std::ceil(range / kCell))), lowest_(size_t(side_ * side_), kNone) {
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (ground[i] || !points[i].allFinite()) continue;
+      const long c = cell(points[i]);
+      if (c >= 0) lowest_[size_t(c)] = std::min(lowest_[size_t(c)], float(points[i].z()));
+    }
+  }
+
+  // A non-ground return within a cell of p, 0.1-1.5 m above it.
+  bool standsOn(const Eigen::Vector3d& p) const {
+    for (double dx : {-kCell, 0.0, kCell}) {
+      for (double dy : {-kCell, 0.0, kCell}) {
+        const long c = cell(p + Eigen::Vector3d(dx, dy, 0.0));
+        if (c >= 0 && lowest_[size_t(c)] > p.z() + 0.1 && lowest_[size_t(c)] < p.z() + 1.5) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  static constexpr double kCell = 0.25;
+  static constexpr float kNone = std::numeric_limits<float>::infinity();
+  long cell(const Eigen::Vector3d& p) const {
+    const long col = long(std::floor(p.x() / kCell)) + side_ / 2, row = long(std::floor(p.y() / kCell)) + side_ / 2;
+    return col >= 0 && row >= 0 && col < side_ && row < side_ ? row * side_ + col : -1;
+  }
+  long side_;
+  std::vector<float> lowest_;
+};
 
 // The ground points of one ring in azimuth order, and the walk over them.
 class RingWalk {
  public:
   RingWalk(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> seeds, std::vector<uint32_t> members,
-           const RoadPointOptions& o)
-      : points_(points), seeds_(seeds), members_(std::move(members)), o_(o) {
+           std::vector<uint32_t> occluders, const ObjectFloor& objects, const RoadPointOptions& o)
+      : points_(points), seeds_(seeds), members_(std::move(members)), occluderIndices_(std::move(occluders)),
+        objects_(objects), o_(o) {
     azimuth_.reserve(members_.size());
     for (uint32_t i : members_) azimuth_.push_back(std::atan2(points_[i].y(), points_[i].x()));
     std::vector<size_t> order(members_.size());
@@ -66,16 +105,21 @@ class RingWalk {
     const size_t n = members_.size();
     std::vector<size_t> path = {start};
     int failures = 0;
-    size_t k = start;
+    size_t k = start, firstFailure = start;
     for (size_t steps = 1; steps < n; ++steps) {
       k = (k + n + size_t(direction)) % n;
       if (visited_[k]) return;
       const Eigen::Vector3d& b = points_[members_[k]];
       if ((b.head<2>() - points_[members_[path.back()]].head<2>()).norm() > o_.maxGap) return;
       if (!agrees(b, path) || climbsOutOfGutter(b, path)) {
+        if (failures == 0) firstFailure = k;
         if (++failures > o_.maxSkipped) {
-          // Ended by a height step, not a gap: the last road point lies at a curb.
-          if (path.size() > 1) road[members_[path.back()]] = kCurbPoint;
+          // Ended by a height step, not a gap: the last road point lies at a curb, unless the step
+          // was not seen (an object stood between) or is an object's foot (a parked car's side).
+          if (path.size() > 1 && !occludedBetween(path.back(), firstFailure, direction) &&
+              !objects_.standsOn(points_[members_[firstFailure]])) {
+            road[members_[path.back()]] = kCurbPoint;
+          }
           return;
         }
         continue;
@@ -127,6 +171,31 @@ class RingWalk {
     return false;
   }
 
+  // Whether a return of this ring higher than kOccluderHeight above road point `from` lies between it
+  // and ground point `to`, walking in `direction` of azimuth.
+  bool occludedBetween(size_t from, size_t to, int direction) const {
+    sortOccluders();
+    double a = azimuth_[from], b = azimuth_[to];
+    if (direction < 0) std::swap(a, b);
+    const double minZ = points_[members_[from]].z() + kOccluderHeight;
+    const auto above = [&](double lo, double hi) {
+      auto it = std::upper_bound(occluders_.begin(), occluders_.end(), lo, [](double v, const auto& o) { return v < o.first; });
+      for (; it != occluders_.end() && it->first < hi; ++it) {
+        if (it->second > minZ) return true;
+      }
+      return false;
+    };
+    return a <= b ? above(a, b) : above(a, std::numbers::pi) || above(-std::numbers::pi - 1.0, b);
+  }
+
+  // On first use only: most rings' walks end at no step.
+  void sortOccluders() const {
+    if (occluderIndices_.empty()) return;
+    for (uint32_t i : occluderIndices_) occluders_.push_back({std::atan2(points_[i].y(), points_[i].x()), points_[i].z()});
+    occluderIndices_.clear();
+    std::sort(occluders_.begin(), occluders_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+
   // The mean height of the walk's points j-2, j-1 and j.
   double smoothedHeight(const std::vector<size_t>& path, size_t j) const {
     return (points_[members_[path[j]]].z() + points_[members_[path[j - 1]]].z() + points_[members_[path[j - 2]]].z()) / 3.0;
@@ -163,6 +232,9 @@ class RingWalk {
   std::span<const uint8_t> seeds_;
   std::vector<uint32_t> members_;
   std::vector<double> azimuth_;
+  mutable std::vector<uint32_t> occluderIndices_;  // the ring's non-ground returns, until sorted into ...
+  mutable std::vector<std::pair<double, double>> occluders_;  // ... their (azimuth, z), by azimuth
+  const ObjectFloor& objects_;
   std::vector<uint8_t> visited_;
   const RoadPointOptions& o_;
 };
@@ -272,16 +344,17 @@ std::vector<uint8_t> extractRoadPoints(std::span<const Eigen::Vector3d> points, 
                                    std::to_string(ground.size()) + ") do not match the points (" +
                                    std::to_string(points.size()) + ")");
   }
-  std::array<std::vector<uint32_t>, 256> rings;
+  std::array<std::vector<uint32_t>, 256> rings, occluders;
   for (size_t i = 0; i < points.size(); ++i) {
-    if (ground[i] && points[i].allFinite() && points[i].head<2>().norm() < options.maxRange) {
-      rings[ring[i]].push_back(uint32_t(i));
+    if (points[i].allFinite() && points[i].head<2>().norm() < options.maxRange) {
+      (ground[i] ? rings : occluders)[ring[i]].push_back(uint32_t(i));
     }
   }
   const std::vector<uint8_t> seeds = laneSeeds(points, ground, options);
+  const ObjectFloor objects(points, ground, options.maxRange);
   std::vector<uint8_t> road(points.size(), 0);
-  for (std::vector<uint32_t>& members : rings) {
-    if (!members.empty()) RingWalk(points, seeds, std::move(members), options).walk(road);
+  for (size_t r = 0; r < rings.size(); ++r) {
+    if (!rings[r].empty()) RingWalk(points, seeds, std::move(rings[r]), std::move(occluders[r]), objects, options).walk(road);
   }
   return road;
 }

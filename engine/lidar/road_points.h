@@ -45,7 +45,7 @@ struct RoadPointOptions {
 };
 
 inline constexpr uint8_t kRoadPoint = 1;
-inline constexpr uint8_t kCurbPoint = 2;  // a road point where the walk ended at a height step (a curb)
+inline constexpr uint8_t kCurbPoint = 2;  // a road point where the walk ended at a height step it saw, no object on it (a curb)
 
 // One flag per point: 0 = not road, kRoadPoint, or kCurbPoint (also road). `ring` is each point's
 // laser number, `ground` its ground flag (segmentGround); all three have the points' length.

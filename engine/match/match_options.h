@@ -39,7 +39,7 @@ struct MatchOptions {
   bool curbRefinement = true;
   double curbHuber = 0.15;              // metres
   double curbMaxDistance = 1.0;         // metres from the boundary at the NDT estimate
-  int minCurbPoints = 20;
+  int minCurbPoints = 12;               // (20 before curbs at parked cars were left out)
   bool curbLateralOnly = true;          // curbs correct lateral position and yaw only
 
   // --- Covariance and acceptance (both backends) ---

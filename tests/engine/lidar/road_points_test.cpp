@@ -87,6 +87,26 @@ TEST(RoadPoints, LowCurbIsStillACurb) {
   EXPECT_LT(flaggedShare(l, road, 3.0, 40.0).at(Surface::Sidewalk), 0.02);
 }
 
+// A car parked at the kerb, its body down to the road: the rings climb its side through points
+// close enough to the road to be ground, then meet the step of its higher side. Neither that
+// step nor one hidden behind the car is a curb; the kerbs beside it still are.
+TEST(RoadPoints, AParkedCarsSideIsNoCurb) {
+  test::Street street;
+  street.carNearY = -(street.halfWidth - 0.2 - 1.8);
+  street.carClearance = 0.0;
+  const Labelled l = scan(street);
+  const std::vector<uint8_t> road = extractRoadPoints(l.points, l.rings, segmentGround(l.points));
+  size_t atCar = 0, atKerb = 0;
+  for (size_t i = 0; i < l.points.size(); ++i) {
+    if (road[i] != kCurbPoint) continue;
+    const Eigen::Vector3d& p = l.points[i];
+    if (p.x() > 5.0 && p.x() < 11.0 && std::abs(p.y() - street.carNearY) < 0.8) ++atCar;
+    if (std::abs(std::abs(p.y()) - street.halfWidth) < 0.5) ++atKerb;
+  }
+  EXPECT_EQ(atCar, 0u);  // 4 before the rule
+  EXPECT_GT(atKerb, 40u);
+}
+
 TEST(RoadPoints, LaneSeedsEndAtTheKerbAcrossTheRoad) {
   // Driving towards a T-junction's far side 18 m ahead: beyond its kerb the x axis runs on raised
   // ground within the seed tolerance (0.12 m + 0.01 m per metre), so seeds there walk whole rings

@@ -23,6 +23,7 @@ struct ScanPoint {
 struct Street {
   double roadZ = -0.32, curb = 0.15, halfWidth = 5.0, sidewalk = 3.0, sensorZ = 1.6;
   bool car = true;  // a 4.5 x 1.8 x 1.5 m box 8 m ahead in the right lane
+  double carNearY = -1.0, carClearance = 0.2;  // its side facing the sensor; its floor above the road
   // A kerb across the road this far ahead with raised ground (sidewalk) beyond: the far side of a
   // T-junction the vehicle drives towards.
   double endAt = std::numeric_limits<double>::infinity();
@@ -69,12 +70,12 @@ inline std::vector<ScanPoint> scanStreet(const Street& s, unsigned seed = 1) {
       if (s.car) {  // the box's faces facing the sensor: x = 6 (rear) and y = -1 (left side)
         if (std::abs(d.x()) > 1e-9) {
           consider(6.0 / d.x(), Surface::Car, [&](const Eigen::Vector3d& p) {
-            return p.y() >= -4.0 && p.y() <= -1.0 - 0.0 && p.y() >= -2.8 && p.z() >= s.roadZ + 0.2 && p.z() <= s.roadZ + 1.5;
+            return p.y() <= s.carNearY && p.y() >= s.carNearY - 1.8 && p.z() >= s.roadZ + s.carClearance && p.z() <= s.roadZ + 1.5;
           });
         }
         if (std::abs(d.y()) > 1e-9) {
-          consider(-1.0 / d.y(), Surface::Car, [&](const Eigen::Vector3d& p) {
-            return p.x() >= 6.0 && p.x() <= 10.5 && p.z() >= s.roadZ + 0.2 && p.z() <= s.roadZ + 1.5;
+          consider(s.carNearY / d.y(), Surface::Car, [&](const Eigen::Vector3d& p) {
+            return p.x() >= 6.0 && p.x() <= 10.5 && p.z() >= s.roadZ + s.carClearance && p.z() <= s.roadZ + 1.5;
           });
         }
       }
