@@ -64,7 +64,7 @@ class RingWalk {
  public:
   RingWalk(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> seeds, std::vector<uint32_t> members,
            std::vector<uint32_t> occluders, const ObjectFloor& objects, const RoadPointOptions& o)
-      : points_(points), seeds_(seeds), members_(std::move(members)), occluderIndices_(std::move(occluders)),
+      : points_(points), seeds_(seeds), members_(std::move(members)), occluders_(std::move(occluders)),
         objects_(objects), o_(o) {
     azimuth_.reserve(members_.size());
     for (uint32_t i : members_) azimuth_.push_back(std::atan2(points_[i].y(), points_[i].x()));
@@ -172,28 +172,24 @@ class RingWalk {
   }
 
   // Whether a return of this ring higher than kOccluderHeight above road point `from` lies between it
-  // and ground point `to`, walking in `direction` of azimuth.
+  // and ground point `to`, walking in `direction` of azimuth. A scan of the ring's non-ground returns
+  // by pseudo-angle: a few walks per ring end at a step, and sorting them all cost more (4 ms a sweep).
   bool occludedBetween(size_t from, size_t to, int direction) const {
-    sortOccluders();
-    double a = azimuth_[from], b = azimuth_[to];
+    double a = pseudoAngle(points_[members_[from]]), b = pseudoAngle(points_[members_[to]]);
     if (direction < 0) std::swap(a, b);
     const double minZ = points_[members_[from]].z() + kOccluderHeight;
-    const auto above = [&](double lo, double hi) {
-      auto it = std::upper_bound(occluders_.begin(), occluders_.end(), lo, [](double v, const auto& o) { return v < o.first; });
-      for (; it != occluders_.end() && it->first < hi; ++it) {
-        if (it->second > minZ) return true;
-      }
-      return false;
-    };
-    return a <= b ? above(a, b) : above(a, std::numbers::pi) || above(-std::numbers::pi - 1.0, b);
+    for (uint32_t i : occluders_) {
+      if (points_[i].z() <= minZ) continue;
+      const double p = pseudoAngle(points_[i]);
+      if (a <= b ? (p > a && p < b) : (p > a || p < b)) return true;
+    }
+    return false;
   }
 
-  // On first use only: most rings' walks end at no step.
-  void sortOccluders() const {
-    if (occluderIndices_.empty()) return;
-    for (uint32_t i : occluderIndices_) occluders_.push_back({std::atan2(points_[i].y(), points_[i].x()), points_[i].z()});
-    occluderIndices_.clear();
-    std::sort(occluders_.begin(), occluders_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // Increases with the azimuth from the x axis round to it again, in [0, 4).
+  static double pseudoAngle(const Eigen::Vector3d& p) {
+    const double r = p.x() / (std::abs(p.x()) + std::abs(p.y()) + 1e-300);
+    return p.y() >= 0.0 ? 1.0 - r : 3.0 + r;
   }
 
   // The mean height of the walk's points j-2, j-1 and j.
@@ -232,8 +228,7 @@ class RingWalk {
   std::span<const uint8_t> seeds_;
   std::vector<uint32_t> members_;
   std::vector<double> azimuth_;
-  mutable std::vector<uint32_t> occluderIndices_;  // the ring's non-ground returns, until sorted into ...
-  mutable std::vector<std::pair<double, double>> occluders_;  // ... their (azimuth, z), by azimuth
+  std::vector<uint32_t> occluders_;  // the ring's non-ground returns
   const ObjectFloor& objects_;
   std::vector<uint8_t> visited_;
   const RoadPointOptions& o_;
