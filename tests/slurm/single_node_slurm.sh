@@ -101,8 +101,8 @@ stop_slurm() {
   # scontrol shutdown asks; wait for the daemons to go, then make sure.
   local pidfile pid
   for pidfile in "$dir/slurmctld.pid" "$dir/slurmd.pid" "$dir/munge/munged.pid"; do
-    [[ -f $pidfile ]] || continue
-    pid=$(cat "$pidfile")
+    # The daemon may remove its pid file between the test and the read (it is shutting down).
+    pid=$(cat "$pidfile" 2>/dev/null) || continue
     [[ $pidfile == */munged.pid ]] && kill "$pid" 2>/dev/null
     for _ in $(seq 20); do kill -0 "$pid" 2>/dev/null || break; sleep 0.5; done
     kill -9 "$pid" 2>/dev/null || true
