@@ -37,19 +37,20 @@ class ObjectFloor {
     }
   }
 
-  // A non-ground return within a cell of p, 0.1-1.5 m above it.
+  // A non-ground return within a cell of p, between kAbove and kBelow above it (a car's side, not a
+  // tree's canopy).
   bool standsOn(const Eigen::Vector3d& p) const {
     for (double dx : {-kCell, 0.0, kCell}) {
       for (double dy : {-kCell, 0.0, kCell}) {
         const long c = cell(p + Eigen::Vector3d(dx, dy, 0.0));
-        if (c >= 0 && lowest_[size_t(c)] > p.z() + 0.1 && lowest_[size_t(c)] < p.z() + 1.5) return true;
+        if (c >= 0 && lowest_[size_t(c)] > p.z() + kAbove && lowest_[size_t(c)] < p.z() + kBelow) return true;
       }
     }
     return false;
   }
 
  private:
-  static constexpr double kCell = 0.25;
+  static constexpr double kCell = 0.25, kAbove = 0.1, kBelow = 1.5;  // metres
   static constexpr float kNone = std::numeric_limits<float>::infinity();
   long cell(const Eigen::Vector3d& p) const {
     const long col = long(std::floor(p.x() / kCell)) + side_ / 2, row = long(std::floor(p.y() / kCell)) + side_ / 2;
