@@ -7,7 +7,9 @@
 # family, source, seed, seconds and log id. N = 5 is ~3,400 sweeps: about 8 minutes on an idle
 # 2-core machine (a family sweep ~0.12 s on 2 threads), several times that under load.
 # Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2),
-# DURATION (seconds of every log instead of 30-40).
+# DURATION (seconds of every log instead of 30-40), FAMILIES (default "tuning validation") and
+# VALIDATION_BASE (200: towns 201.., seeds 2001..; another base, e.g. 300, draws a held-out set of
+# validation worlds that nothing has been looked at on).
 set -euo pipefail
 if [[ $# -lt 1 || $# -gt 2 || "$1" == -* ]]; then
   echo "usage: scripts/make-families.sh OUT_DIR [N]" >&2
@@ -23,14 +25,21 @@ fi
 hdprior="${HDPRIOR:-$root/build/app/hdprior}"
 real="${REAL_LOG:-$root/../shared/data/av2/7fab2350-7eaf-3b7e-a39d-6937a4c1bede}"
 threads="${THREADS:-2}"
+families="${FAMILIES:-tuning validation}"
+validation_base="${VALIDATION_BASE:-200}"
+if ! [[ "$validation_base" =~ ^[0-9]+$ ]] || (( validation_base < 200 )); then
+  echo "make-families.sh: VALIDATION_BASE must be an integer >= 200, not '$validation_base'" >&2
+  exit 2
+fi
 [[ -x "$hdprior" ]] || { echo "make-families.sh: $hdprior not built (scripts/build.sh)" >&2; exit 2; }
 [[ -d "$real" ]] || { echo "make-families.sh: real log $real not found (set REAL_LOG)" >&2; exit 2; }
 
 mkdir -p "$out"
 index="$out/families.tsv"
 printf 'family\tsource\tseed\tseconds\tlog_id\n' > "$index.partial"
-for family in tuning validation; do
-  base=$([[ $family == tuning ]] && echo 100 || echo 200)
+for family in $families; do
+  [[ $family == tuning || $family == validation ]] || { echo "make-families.sh: unknown family '$family'" >&2; exit 2; }
+  base=$([[ $family == tuning ]] && echo 100 || echo "$validation_base")
   mkdir -p "$out/$family"
   for ((i = 1; i <= n; i++)); do
     seed=$((10 * base + i))
@@ -50,4 +59,4 @@ for family in tuning validation; do
   done
 done
 mv "$index.partial" "$index"
-echo "wrote $((2 * n)) logs under $out (list: $index)" >&2
+echo "wrote $(( $(wc -l < "$index") - 1 )) logs under $out (list: $index)" >&2
