@@ -55,14 +55,23 @@ void DriftModelLikelihood::restartAt(const PosePrior& prior) {
   }
 }
 
-PoseGraphOptions DriftModelLikelihood::likeliest() const {
+std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() const {
+  std::vector<Candidate> out = candidates_;
+  for (size_t i = 0; i < out.size(); ++i) out[i].logLikelihood = logLikelihood_[i];
+  out[pick()].likeliest = true;
+  return out;
+}
+
+size_t DriftModelLikelihood::pick() const {
   const double best = *std::max_element(logLikelihood_.begin(), logLikelihood_.end());
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
     if (logLikelihood_[i] < best - configured_.driftModelMarginNats) continue;
     if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
   }
-  return candidate(pick);
+  return pick;
 }
+
+PoseGraphOptions DriftModelLikelihood::likeliest() const { return candidate(pick()); }
 
 }  // namespace hdprior

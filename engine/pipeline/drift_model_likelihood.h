@@ -40,12 +40,17 @@ class DriftModelLikelihood {
   struct Candidate {
     double factor = 1.0;          // times the configured per-metre sigmas
     double mapErrorLength = 0.0;  // the configured one, or 0 (independent)
+    double logLikelihood = 0.0;   // of the priors so far, under this candidate (nats)
+    bool likeliest = false;       // the one likeliest() picks
   };
+  // Every candidate with its log-likelihood: how clearly the pick won.
+  std::vector<Candidate> scored() const;
   const std::vector<Candidate>& candidates() const { return candidates_; }
   const std::vector<double>& logLikelihoods() const { return logLikelihood_; }
 
  private:
   PoseGraphOptions candidate(size_t i) const;
+  size_t pick() const;
 
   PoseGraphOptions configured_;
   std::vector<Candidate> candidates_;

@@ -63,6 +63,7 @@ struct PipelineRun {
   OdometryDrift odometryDrift;   // injected into the odometry's reported poses (config odometry.drift)
   std::optional<GivenOdometry> givenOdometry;  // where the odometry's poses came from, when from a file
   PoseGraphOptions graphOptions;  // with priors: the graph's options in use (drift model covering odometryDrift)
+  std::vector<DriftModelLikelihood::Candidate> driftModelCandidates;  // with an estimated drift model
   std::vector<SkippedSweep> skippedSweeps;
   std::vector<size_t> frameSweeps;  // the log's sweep index of each odometry frame (they differ after a skip)
 

@@ -81,6 +81,10 @@ class PriorStage {
   const PriorStageTimes& times() const { return times_; }
   // The graph options in use: the configuration's, with the source's drift model covering odometry.drift.
   const PoseGraphOptions& graphOptions() const { return config_.graph; }
+  // The drift models the priors were weighed under (empty unless graph.estimate_drift_model).
+  std::vector<DriftModelLikelihood::Candidate> driftModelCandidates() const {
+    return driftModels_ ? driftModels_->scored() : std::vector<DriftModelLikelihood::Candidate>{};
+  }
 
  private:
   SE3 predictedPose(const Keyframe& keyframe) const;

@@ -121,13 +121,24 @@ json driftJson(const OdometryDrift& d) {
 }
 
 // The graph's odometry drift model as the run used it.
-json driftModelJson(const PoseGraphOptions& g) {
-  return {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
-          {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
-          {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
-          {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}, {"odometry_covariance", g.odometryCovariance},
-          {"estimated", g.estimateDriftModel}, {"margin_nats", g.driftModelMarginNats},
-          {"map_error_length_m", g.mapErrorLength}};
+// The drift model in use and, when it was estimated, every candidate's log-likelihood: a pick that
+// won by a fraction of a nat is noise, and the user should see that.
+json driftModelJson(const PoseGraphOptions& g, const std::vector<DriftModelLikelihood::Candidate>& candidates) {
+  json out = {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
+              {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
+              {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
+              {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}, {"odometry_covariance", g.odometryCovariance},
+              {"estimated", g.estimateDriftModel}, {"margin_nats", g.driftModelMarginNats},
+              {"map_error_length_m", g.mapErrorLength}};
+  if (!candidates.empty()) {
+    json list = json::array();
+    for (const auto& c : candidates) {
+      list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength}, {"log_likelihood", c.logLikelihood},
+                      {"chosen", c.likeliest}});
+    }
+    out["candidates"] = list;
+  }
+  return out;
 }
 
 // Where the odometry's poses came from: the built-in lidar odometry or a trajectory file.
@@ -164,7 +175,7 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
     m["optimized"] = evaluationJson(*metrics.optimized);
     m["matches"] = {{"accepted", metrics.matches.accepted}, {"degenerate", metrics.matches.degenerate},
                     {"rejected", metrics.matches.rejected}};
-    m["odometry_drift_model"] = driftModelJson(run.graphOptions);
+    m["odometry_drift_model"] = driftModelJson(run.graphOptions, run.driftModelCandidates);
     if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
     m["prior_calibration"] = calibrationJson(metrics.priorCalibration);
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},

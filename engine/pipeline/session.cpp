@@ -209,6 +209,7 @@ PipelineRun Session::finish(double mapVoxel) {
   if (priors_) {
     run.finalSolve = optimize();
     run.graphOptions = priors_->graphOptions();  // after the solve: the drift model it estimated
+    run.driftModelCandidates = priors_->driftModelCandidates();
     run.optimized = optimizedTrajectory();
     run.optimizedKeyframes = priors_->graph().poses();
     for (size_t k = 0; k < priors_->graph().size(); ++k) run.odometryScales.push_back(priors_->graph().odometryScale(k));

@@ -137,6 +137,19 @@ TEST_F(OdometryDriftRun, PriorsCorrectTheInjectedDrift) {
   const auto m = metricsOf(out);
   EXPECT_GE(m["odometry_drift_model"]["translation_sigma_per_m"].get<double>(), 0.007);
   EXPECT_GE(m["odometry_drift_model"]["rotation_sigma_deg_per_m"].get<double>(), 0.005);
+  // metrics.json shows the evidence for the pick: every candidate's log-likelihood, and the pick is
+  // the tightest candidate within the margin of the likeliest.
+  const auto& model = m["odometry_drift_model"];
+  ASSERT_EQ(model["candidates"].size(), 10u) << model;
+  double best = -1e300;
+  for (const auto& c : model["candidates"]) best = std::max(best, c["log_likelihood"].get<double>());
+  const double margin = model["margin_nats"].get<double>();
+  double tightest = 1e300, chosen = 0.0;
+  for (const auto& c : model["candidates"]) {
+    if (c["log_likelihood"].get<double>() >= best - margin) tightest = std::min(tightest, c["factor"].get<double>());
+    if (c["chosen"].get<bool>()) chosen = c["factor"].get<double>();
+  }
+  EXPECT_EQ(chosen, tightest) << model;
   const double odometry = m["odometry"]["ate_translation_m"]["rmse"].get<double>();
   const double optimized = m["optimized"]["ate_translation_m"]["rmse"].get<double>();
   std::printf("ATE rmse: drifted odometry %.3f m, optimized %.3f m; lateral %.3f -> %.3f m\n", odometry, optimized,
