@@ -34,11 +34,14 @@ fi
 [[ -x "$hdprior" ]] || { echo "make-families.sh: $hdprior not built (scripts/build.sh)" >&2; exit 2; }
 [[ -d "$real" ]] || { echo "make-families.sh: real log $real not found (set REAL_LOG)" >&2; exit 2; }
 
+for family in $families; do
+  [[ $family == tuning || $family == validation ]] || { echo "make-families.sh: unknown family '$family' (tuning, validation)" >&2; exit 2; }
+done
+
 mkdir -p "$out"
 index="$out/families.tsv"
 printf 'family\tsource\tseed\tseconds\tlog_id\n' > "$index.partial"
 for family in $families; do
-  [[ $family == tuning || $family == validation ]] || { echo "make-families.sh: unknown family '$family'" >&2; exit 2; }
   base=$([[ $family == tuning ]] && echo 100 || echo "$validation_base")
   mkdir -p "$out/$family"
   for ((i = 1; i <= n; i++)); do
