@@ -58,7 +58,7 @@ void DriftModelLikelihood::restartAt(const PosePrior& prior) {
 std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() const {
   std::vector<Candidate> out = candidates_;
   for (size_t i = 0; i < out.size(); ++i) out[i].logLikelihood = logLikelihood_[i];
-  out[pick()].likeliest = true;
+  out[pick()].chosen = true;
   return out;
 }
 

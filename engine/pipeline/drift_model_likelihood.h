@@ -41,7 +41,7 @@ class DriftModelLikelihood {
     double factor = 1.0;          // times the configured per-metre sigmas
     double mapErrorLength = 0.0;  // the configured one, or 0 (independent)
     double logLikelihood = 0.0;   // of the priors so far, under this candidate (nats)
-    bool likeliest = false;       // the one likeliest() picks
+    bool chosen = false;          // the one likeliest() picks
   };
   // Every candidate with its log-likelihood: how clearly the pick won.
   std::vector<Candidate> scored() const;

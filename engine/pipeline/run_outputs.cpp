@@ -134,7 +134,7 @@ json driftModelJson(const PoseGraphOptions& g, const std::vector<DriftModelLikel
     json list = json::array();
     for (const auto& c : candidates) {
       list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength}, {"log_likelihood", c.logLikelihood},
-                      {"chosen", c.likeliest}});
+                      {"chosen", c.chosen}});
     }
     out["candidates"] = list;
   }

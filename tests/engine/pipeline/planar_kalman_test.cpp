@@ -145,6 +145,26 @@ TEST(DriftModelLikelihood, AMarginKeepsTheConfiguredModelWhereALooserOneIsBarely
   EXPECT_GE(driftRun(0.02 * kDeg, 2.0).likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
 }
 
+// scored() is what metrics.json shows: each candidate's log-likelihood, and one chosen, the one the
+// final solve takes (the tightest within the margin of the likeliest).
+TEST(DriftModelLikelihood, ScoredShowsEveryCandidateAndTheOneChosen) {
+  for (double margin : {0.0, 1.0, 100.0}) {
+    const DriftModelLikelihood run = driftRun(0.002 * kDeg, margin);
+    const auto scored = run.scored();
+    ASSERT_EQ(scored.size(), run.logLikelihoods().size());
+    int chosen = 0;
+    for (size_t i = 0; i < scored.size(); ++i) {
+      EXPECT_EQ(scored[i].logLikelihood, run.logLikelihoods()[i]);
+      if (!scored[i].chosen) continue;
+      ++chosen;
+      EXPECT_EQ(run.likeliest().odometryRotationSigmaDegPerM, PoseGraphOptions{}.odometryRotationSigmaDegPerM * scored[i].factor);
+      EXPECT_EQ(run.likeliest().mapErrorLength, scored[i].mapErrorLength);
+    }
+    EXPECT_EQ(chosen, 1) << margin;
+    if (margin == 100.0) EXPECT_EQ(run.likeliest().odometryRotationSigmaDegPerM, PoseGraphOptions{}.odometryRotationSigmaDegPerM);
+  }
+}
+
 // An odometry sure of itself (0.15 deg / 100 m) along +x and lateral priors that all sit 0.25 m to the left: the map's own error,
 // shared by every prior (sigma 0.05 given the map, map sigma 0.2).
 template <typename Observe>
