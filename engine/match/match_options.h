@@ -55,7 +55,7 @@ struct MatchOptions {
   double minBoundaryPoints = 20.0;
   double minInformation = 4.0;          // and the NDT information there at least this (sigma <= 0.5 m)
   int minPoints = 200;
-  double minInlierRatio = 0.6;          // share of points placed on the drivable area
+  double minInlierRatio = 0.85;         // share of points placed on the drivable area (README: A third held-out set)
   // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.
   Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
