@@ -11,6 +11,7 @@
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
+#include "probe_arguments.h"
 #include "engine/lidar/ground_segmentation.h"
 #include "engine/lidar/road_points.h"
 #include "engine/lidar/sweep_points.h"
@@ -47,12 +48,9 @@ bool objectStandsBy(const std::vector<Eigen::Vector3d>& points, const std::vecto
 }  // namespace
 
 int main(int argc, char** argv) try {
-  if (argc < 3 || std::atol(argv[2]) <= 0) {
-    std::fprintf(stderr, "usage: probe_curb_origin LOG STEP\n");
-    return 2;
-  }
+  const size_t step = probeStep(argc, argv, "probe_curb_origin");
+  if (step == 0) return 2;
   const ArgoverseLog log(argv[1]);
-  const size_t step = size_t(std::atol(argv[2]));
   const HdMap map = HdMap::load(log.mapFiles());
   Counts all;
   for (size_t s = 0; s < log.sweepTimestamps().size(); s += step) {

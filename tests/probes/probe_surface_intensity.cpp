@@ -11,6 +11,7 @@
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
+#include "probe_arguments.h"
 #include "engine/lidar/ground_segmentation.h"
 #include "engine/lidar/road_points.h"
 #include "engine/lidar/sweep_points.h"
@@ -33,12 +34,9 @@ void printQuartiles(const char* what, std::vector<int> v) {
 }  // namespace
 
 int main(int argc, char** argv) try {
-  if (argc < 3 || std::atol(argv[2]) <= 0) {
-    std::fprintf(stderr, "usage: probe_surface_intensity LOG STEP\n");
-    return 2;
-  }
+  const size_t step = probeStep(argc, argv, "probe_surface_intensity");
+  if (step == 0) return 2;
   const ArgoverseLog log(argv[1]);
-  const size_t step = size_t(std::atol(argv[2]));
   const HdMap map = HdMap::load(log.mapFiles());
   const double bands[] = {0, 10, 20, 40};
   std::vector<int> inside[3], outside[3], roadInside[3], roadOutside[3];
