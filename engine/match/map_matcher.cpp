@@ -28,7 +28,7 @@ void validate(const MatchOptions& o) {
       !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {
     bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
   }
-  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
+  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || !(o.evidenceSpillShare >= 0 && o.evidenceSpillShare <= 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
       !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.staleRegionSize > 0) || !(o.staleDistance > 0) || !(o.staleDistancePerMetre >= 0) ||
       !(o.staleShare >= 0 && o.staleShare <= 1) || !(o.evidenceCurbBand > 0) ||
       !(o.evidenceCurbShare >= 0 && o.evidenceCurbShare < 1) || !(o.mapSigma >= 0) ||

@@ -76,6 +76,7 @@ struct MatchOptions {
   bool evidenceUncertainty = true;
   double evidenceShare = 0.01;          // poses are allowed while at most this share of the points ...
   int evidenceMinPoints = 5;            // ... (at least this many) leave the drivable area
+  double evidenceSpillShare = 0.0;      // this share of the points off on one side at the estimate: that side's edge is not seen (0: off)
   double evidenceMargin = 0.2;          // metres beyond the boundary before a point counts as off
   double evidenceCurbBand = 0.5;        // curb points (on the boundary at the estimate) count as off beyond this
   double evidenceCurbShare = 0.2;       // share of those that may leave

@@ -157,6 +157,7 @@ Sections sectionsOf(Config& c) {
         {"stale_share", &mt.staleShare, 0, 1},
         {"evidence_uncertainty", &mt.evidenceUncertainty},
         {"evidence_share", &mt.evidenceShare, 0, 0.999},
+        {"evidence_spill_share", &mt.evidenceSpillShare, 0, 1},
         {"evidence_min_points", &mt.evidenceMinPoints, 0, 1000000},
         {"evidence_margin", &mt.evidenceMargin, -10, 10},
         {"evidence_stride", &mt.evidenceStride, 1, 1000},
