@@ -1,6 +1,7 @@
 #include "engine/pipeline/drift_model_likelihood.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "engine/graph/odometry_information.h"
 #include "engine/odom/keyframe.h"
@@ -22,7 +23,7 @@ std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOption
 }  // namespace
 
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
-    : configured_(configured), candidates_(candidatesFor(configured)), logLikelihood_(candidates_.size(), 0.0) {
+    : configured_(configured), candidates_(candidatesFor(configured)) {
   for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength);
 }
 
@@ -43,7 +44,7 @@ void DriftModelLikelihood::step(const Keyframe& keyframe) {
 void DriftModelLikelihood::observe(const PosePrior& prior) {
   for (size_t i = 0; i < filters_.size(); ++i) {
     const PlanarKalman::Innovation n = filters_[i].innovation(prior);
-    logLikelihood_[i] += n.logDensity;
+    candidates_[i].logLikelihood += n.logDensity;
     filters_[i].update(n);
   }
 }
@@ -57,16 +58,16 @@ void DriftModelLikelihood::restartAt(const PosePrior& prior) {
 
 std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() const {
   std::vector<Candidate> out = candidates_;
-  for (size_t i = 0; i < out.size(); ++i) out[i].logLikelihood = logLikelihood_[i];
   out[pick()].chosen = true;
   return out;
 }
 
 size_t DriftModelLikelihood::pick() const {
-  const double best = *std::max_element(logLikelihood_.begin(), logLikelihood_.end());
+  double best = -std::numeric_limits<double>::infinity();
+  for (const Candidate& c : candidates_) best = std::max(best, c.logLikelihood);
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
-    if (logLikelihood_[i] < best - configured_.driftModelMarginNats) continue;
+    if (candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
     if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
   }
   return pick;

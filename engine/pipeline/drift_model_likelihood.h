@@ -43,10 +43,8 @@ class DriftModelLikelihood {
     double logLikelihood = 0.0;   // of the priors so far, under this candidate (nats)
     bool chosen = false;          // the one likeliest() picks
   };
-  // Every candidate with its log-likelihood: how clearly the pick won.
+  // Every candidate with its log-likelihood and the one chosen: how clearly the pick won.
   std::vector<Candidate> scored() const;
-  const std::vector<Candidate>& candidates() const { return candidates_; }
-  const std::vector<double>& logLikelihoods() const { return logLikelihood_; }
 
  private:
   PoseGraphOptions candidate(size_t i) const;
@@ -55,7 +53,6 @@ class DriftModelLikelihood {
   PoseGraphOptions configured_;
   std::vector<Candidate> candidates_;
   std::vector<PlanarKalman> filters_;
-  std::vector<double> logLikelihood_;
 };
 
 }  // namespace hdprior
