@@ -14,8 +14,10 @@ namespace hdprior {
 // find atan2/sqrt by argument-dependent lookup, so this header needs no Ceres). Parameters:
 // a unit quaternion (x, y, z, w: Eigen's order) and a translation per pose.
 
-// Odometry between-factor with the odometry's scale error s (a state of its own, see PoseGraphOptions):
-// r = sqrt(Omega) [2 vec(q_meas^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - S t_meas], S = diag(1 + s, 1 + s, 1).
+// Odometry between-factor with the odometry's scale error s and yaw drift b (radians per metre; states
+// of their own, see PoseGraphOptions):
+// r = sqrt(Omega) [2 vec((q_meas Rz(-b d))^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - S t_meas], S = diag(1 + s, 1 + s, 1),
+// d the step's length in the plane: an odometry whose heading turns b d too far left over the step.
 // The scale acts in the vehicle's plane only: on a grade the altitude priors would otherwise take a
 // pitch drift for a scale error (a 0.1 deg pitch bias on a 3 % grade looks like 6 % scale in z).
 struct BetweenFactor {
@@ -27,11 +29,13 @@ struct BetweenFactor {
       : qMeasured(iTj.rotation()), tMeasured(iTj.translation()), sqrtInformation(sqrtInfo) {}
 
   template <typename T>
-  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, const T* scale, T* residual) const {
+  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, const T* scale, const T* yawDrift, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> Qi(qi), Qj(qj);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Ti(ti), Tj(tj);
     const Eigen::Quaternion<T> qij = Qi.conjugate() * Qj;
-    const Eigen::Quaternion<T> qe = qMeasured.cast<T>().conjugate() * qij;
+    const T halfDrift = T(-0.5 * tMeasured.head<2>().norm()) * yawDrift[0];
+    const Eigen::Quaternion<T> drift(cos(halfDrift), T(0), T(0), sin(halfDrift));
+    const Eigen::Quaternion<T> qe = (qMeasured.cast<T>() * drift).conjugate() * qij;
     Eigen::Matrix<T, 6, 1> r;
     r.template head<3>() = T(2.0) * qe.vec();
     Eigen::Matrix<T, 3, 1> scaled = tMeasured.cast<T>();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <ceres/ceres.h>
@@ -22,16 +23,28 @@ struct PoseGraph::Impl {
   std::vector<double> mapOffsetMetres;
   Eigen::Vector2d zeroOffset = Eigen::Vector2d::Zero();  // held constant: priors without a map offset state
   double zeroScale = 0.0;  // the scale prior's anchor
+  double yawDrift = 0.0;   // radians per metre: the odometry's yaw drift (held at 0 without the state)
+  double zeroYawDrift = 0.0;
   bool firstFixed = false;
 };
 
 PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
   if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0 ||
-      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0) || !(options_.mapErrorLength >= 0)) {
-    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow, the scale sigmas or mapErrorLength out of range");
+      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0) || !(options_.mapErrorLength >= 0) ||
+      !(options_.odometryYawDriftSigmaDegPer100m >= 0)) {
+    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow, the scale or yaw drift sigmas or mapErrorLength out of range");
   }
   impl_->problem.AddParameterBlock(impl_->zeroOffset.data(), 2);
   impl_->problem.SetParameterBlockConstant(impl_->zeroOffset.data());
+  impl_->problem.AddParameterBlock(&impl_->yawDrift, 1);
+  if (yawDriftIsState()) {
+    const double sigma = options_.odometryYawDriftSigmaDegPer100m * std::numbers::pi / 180.0 / 100.0;
+    impl_->problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma}), nullptr,
+                                    &impl_->zeroYawDrift, &impl_->yawDrift);
+    impl_->problem.SetParameterBlockConstant(&impl_->zeroYawDrift);
+  } else {
+    impl_->problem.SetParameterBlockConstant(&impl_->yawDrift);
+  }
 }
 
 double* PoseGraph::addMapOffsetState(size_t i, double sigma) {
@@ -50,6 +63,8 @@ double* PoseGraph::addMapOffsetState(size_t i, double sigma) {
 }
 
 bool PoseGraph::scaleIsState() const { return options_.odometryScaleSigma > 0.0; }
+
+bool PoseGraph::yawDriftIsState() const { return options_.odometryYawDriftSigmaDegPer100m > 0.0; }
 
 double* PoseGraph::scaleBlock(size_t i) const {
   const bool shared = !scaleIsState() || options_.odometryScaleSigmaPerSqrtM == 0.0;
@@ -91,10 +106,10 @@ size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3
 void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information) {
   if (i >= size() || j >= size() || i == j) throw Error("pose graph", "odometry between unknown keyframes");
   if (j == i + 1) impl_->routeMetres[j] = impl_->routeMetres[i] + iTj.translation().norm();
-  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1>(
+  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1, 1>(
       new BetweenFactor(iTj, sqrtInformation<6>(information)));
   impl_->problem.AddResidualBlock(cost, nullptr, impl_->q[i]->coeffs().data(), impl_->t[i]->data(),
-                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data(), scaleBlock(i));
+                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data(), scaleBlock(i), &impl_->yawDrift);
   if (scaleBlock(i) != scaleBlock(j)) {
     const double sigma = options_.odometryScaleSigmaPerSqrtM * std::sqrt(std::max(iTj.translation().norm(), 1e-3));
     auto* step = new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma});
@@ -163,6 +178,8 @@ double PoseGraph::odometryScale(size_t i) const {
   if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
   return *scaleBlock(i);
 }
+
+double PoseGraph::odometryYawDrift() const { return impl_->yawDrift * 180.0 / std::numbers::pi * 100.0; }
 
 std::vector<SE3> PoseGraph::poses() const {
   std::vector<SE3> out;

@@ -191,6 +191,7 @@ Sections sectionsOf(Config& c) {
         {"odometry_rotation_sigma_deg_per_m", &c.graph.odometryRotationSigmaDegPerM, 0, 180},
         {"odometry_scale_sigma", &c.graph.odometryScaleSigma, 0, 0.5},
         {"odometry_scale_sigma_per_sqrt_m", &c.graph.odometryScaleSigmaPerSqrtM, 0, 0.5},
+        {"odometry_yaw_drift_sigma_deg_per_100m", &c.graph.odometryYawDriftSigmaDegPer100m, 0, 100},
         {"given_odometry_translation_sigma_per_m", &c.graph.givenOdometryTranslationSigmaPerM, 0, 10},
         {"given_odometry_rotation_sigma_deg_per_m", &c.graph.givenOdometryRotationSigmaDegPerM, 0, 180},
         {"odometry_covariance", &c.graph.odometryCovariance},

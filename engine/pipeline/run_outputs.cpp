@@ -127,7 +127,8 @@ json driftModelJson(const PoseGraphOptions& g, const std::vector<DriftModelLikel
   json out = {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
               {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
               {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
-              {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM}, {"odometry_covariance", g.odometryCovariance},
+              {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM},
+              {"yaw_drift_sigma_deg_per_100m", g.odometryYawDriftSigmaDegPer100m}, {"odometry_covariance", g.odometryCovariance},
               {"estimated", g.estimateDriftModel}, {"margin_nats", g.driftModelMarginNats},
               {"map_error_length_m", g.mapErrorLength}};
   if (!candidates.empty()) {
@@ -177,6 +178,7 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
                     {"rejected", metrics.matches.rejected}};
     m["odometry_drift_model"] = driftModelJson(run.graphOptions, run.driftModelCandidates);
     if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
+    if (run.graphOptions.odometryYawDriftSigmaDegPer100m > 0) m["odometry_yaw_drift_deg_per_100m"] = run.odometryYawDrift;
     m["prior_calibration"] = calibrationJson(metrics.priorCalibration);
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
                         {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};
