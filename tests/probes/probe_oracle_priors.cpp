@@ -60,7 +60,7 @@ double alongInformation(const PosePrior& p, double yaw) {
 using PriorOf = std::function<std::optional<PosePrior>(size_t k)>;
 
 struct Ate {
-  double rmse = 0, along = 0, lateral = 0, scale = 0, yawDrift = 0;
+  double rmse = 0, along = 0, lateral = 0, scale = 0, yawDrift = 0, cost = 0;
   size_t priors = 0;
 };
 
@@ -95,12 +95,13 @@ Ate solveWith(const PipelineRun& run, PoseGraphOptions options, const PriorOf& p
       ++a.priors;
     }
   }
-  graph.solve(false);
+  const SolveSummary solved = graph.solve(false);
   const size_t priors = a.priors;
   a = keyframeAte(graph.poses(), truth);
   a.priors = priors;
   a.scale = graph.odometryScale(graph.size() - 1);
   a.yawDrift = graph.odometryYawDrift();
+  a.cost = solved.finalCost;
   return a;
 }
 
@@ -190,6 +191,7 @@ int main(int argc, char** argv) try {
       const Ate a = solveWith(run, options, priorOf, truth);
       std::printf("%-18s %6zu %8.3f %8.3f %8.3f", name.c_str(), a.priors, a.rmse, a.along, a.lateral);
       if (states > 0) std::printf("  %s %+.4f %+.3f", stateNames[states], a.scale, a.yawDrift);
+      if (std::getenv("PROBE_COST")) std::printf("  cost %.2f", a.cost);
       std::printf("\n");
     }
   }
