@@ -15,10 +15,12 @@
 // state too (graph.odometry_yaw_drift_sigma_deg_per_100m 1), and with the yaw drift state alone.
 // With SIGMA:BIAS arguments, J once for each (BIAS: a shared error of the fixes one junction gives, the
 // matcher's are all ahead at the tuning logs' starting junction). Default: 0.2:0.
+// PROBE_ODOMETRY_DIR=D takes the odometry from D/<log id>.tum, as `hdprior run --odometry` does.
 //   probe_oracle_priors LOG CONFIG [SIGMA:BIAS ...]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <numbers>
 #include <optional>
@@ -30,6 +32,7 @@
 #include "engine/geom/se2.h"
 #include "engine/graph/odometry_information.h"
 #include "engine/io/argoverse_log.h"
+#include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/pipeline_run.h"
 
@@ -124,7 +127,11 @@ int main(int argc, char** argv) try {
   if (junctionFixes.empty()) junctionFixes.emplace_back(0.2, 0.0);
   const ArgoverseLog log(argv[1]);
   const Config config = loadConfig(argv[2]);
-  const PipelineRun run = runPipeline(log, config);
+  PipelineOptions pipeline;
+  if (const char* dir = std::getenv("PROBE_ODOMETRY_DIR")) {
+    pipeline.givenOdometry = givenOdometryOf(std::filesystem::path(dir) / (log.id() + ".tum"), {}, log);
+  }
+  const PipelineRun run = runPipeline(log, config, pipeline);
   const std::vector<Keyframe>& keyframes = run.odometry->keyframes();
   std::vector<SE3> truth, odometry;
   for (const Keyframe& kf : keyframes) {
