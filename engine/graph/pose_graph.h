@@ -52,6 +52,8 @@ struct PoseGraphOptions {
   // b one value for the whole log starting at 0 with this standard deviation (degrees per 100 m; 0: no
   // state, b = 0). Without it a scale state takes a yaw drift through a turn for a scale error (a 0.5
   // deg per 100 m drift turned the scale learnt from error-free priors from -0.7 % to +1.3 %: README).
+  // With estimateDriftModel the final solve keeps the state only where the priors make it likelier
+  // (DriftModelLikelihood).
   double odometryYawDriftSigmaDegPer100m = 0.0;
   // false: the odometry's own relative covariance (the built-in odometry's registration
   // covariances) is left out and the drift model alone weighs it, as it weighs a trajectory file;

@@ -13,9 +13,13 @@ namespace {
 std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOptions& configured) {
   std::vector<double> lengths{configured.mapErrorLength};
   if (configured.mapErrorLength > 0.0) lengths.push_back(0.0);
+  std::vector<double> yawDrifts{0.0};
+  if (configured.odometryYawDriftSigmaDegPer100m > 0.0) yawDrifts.push_back(configured.odometryYawDriftSigmaDegPer100m);
   std::vector<DriftModelLikelihood::Candidate> out;
-  for (double length : lengths) {
-    for (double factor : {1.0, 3.0, 10.0, 30.0, 100.0}) out.push_back({factor, length});
+  for (double yawDrift : yawDrifts) {
+    for (double length : lengths) {
+      for (double factor : {1.0, 3.0, 10.0, 30.0, 100.0}) out.push_back({factor, length, yawDrift});
+    }
   }
   return out;
 }
@@ -24,7 +28,7 @@ std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOption
 
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
     : configured_(configured), candidates_(candidatesFor(configured)) {
-  for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength);
+  for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength, c.yawDriftSigmaDegPer100m);
 }
 
 PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
@@ -32,6 +36,7 @@ PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
   o.odometryTranslationSigmaPerM *= candidates_[i].factor;
   o.odometryRotationSigmaDegPerM *= candidates_[i].factor;
   o.mapErrorLength = candidates_[i].mapErrorLength;
+  o.odometryYawDriftSigmaDegPer100m = candidates_[i].yawDriftSigmaDegPer100m;
   return o;
 }
 
@@ -68,7 +73,12 @@ size_t DriftModelLikelihood::pick() const {
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
     if (candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
-    if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
+    // Within the margin the simpler model: no yaw drift state, then the least drift.
+    const auto simpler = [](const Candidate& a, const Candidate& b) {
+      return a.yawDriftSigmaDegPer100m != b.yawDriftSigmaDegPer100m ? a.yawDriftSigmaDegPer100m < b.yawDriftSigmaDegPer100m
+                                                                     : a.factor < b.factor;
+    };
+    if (pick == candidates_.size() || simpler(candidates_[i], candidates_[pick])) pick = i;
   }
   return pick;
 }

@@ -23,7 +23,10 @@ struct Keyframe;
 // With a map error length the filters carry the map's offset as the graph does, so that a run of
 // priors sharing one map error is not read as drift; each factor is then tried with the map error
 // as that field and as independent per prior (a map better than its sigma, where the field would
-// take a real drift for the map's), and the final solve takes the map error model too.
+// take a real drift for the map's), and the final solve takes the map error model too. With a yaw
+// drift sigma configured (PoseGraphOptions::odometryYawDriftSigmaDegPer100m) each is tried with and
+// without the odometry's yaw drift as a state, and the final solve takes the state only where it is
+// likelier by the margin.
 class DriftModelLikelihood {
  public:
   DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start);
@@ -40,6 +43,7 @@ class DriftModelLikelihood {
   struct Candidate {
     double factor = 1.0;          // times the configured per-metre sigmas
     double mapErrorLength = 0.0;  // the configured one, or 0 (independent)
+    double yawDriftSigmaDegPer100m = 0.0;  // the configured one (the yaw drift a state), or 0 (none)
     double logLikelihood = 0.0;   // of the priors so far, under this candidate (nats)
     bool chosen = false;          // the one likeliest() picks
   };

@@ -25,10 +25,15 @@ inline const Eigen::Matrix3d kForgottenPose = Eigen::Vector3d(1e4, 1e4, 2.467401
 // prior then observes pose + offset with its information given the map, and priors that share one
 // map error are not taken for independent evidence. Without it a prior's map error is its own, in
 // the information the caller passes.
+//
+// With a yaw drift sigma (the graph's PoseGraphOptions::odometryYawDriftSigmaDegPer100m) the state
+// also carries the odometry's yaw drift b, radians per metre, one value for the run: each step's
+// heading is taken as the odometry's minus b times its length.
 class PlanarKalman {
  public:
   // The start: the run's given first pose (the graph holds it fixed), zero covariance.
-  explicit PlanarKalman(const Eigen::Vector3d& start = Eigen::Vector3d::Zero(), double mapErrorLength = 0.0);
+  explicit PlanarKalman(const Eigen::Vector3d& start = Eigen::Vector3d::Zero(), double mapErrorLength = 0.0,
+                        double yawDriftSigmaDegPer100m = 0.0);
 
   void setMean(const Eigen::Vector3d& mean) { state_.head<3>() = mean; }
   // The pose's covariance grown by `poseCovariance` (x, y, yaw): what the mean says is trusted less.
@@ -60,20 +65,20 @@ class PlanarKalman {
 
   Eigen::Vector3d mean() const { return state_.head<3>(); }
   Eigen::Matrix3d covariance() const { return covariance_.topLeftCorner<3, 3>(); }
-  Eigen::Vector2d mapOffset() const { return state_.tail<2>(); }
+  Eigen::Vector2d mapOffset() const { return state_.segment<2>(3); }
+  double yawDriftDegPer100m() const;
 
  private:
-  using Vector5d = Eigen::Matrix<double, 5, 1>;
-  using Matrix5d = Eigen::Matrix<double, 5, 5>;
+  using Vector6d = Eigen::Matrix<double, 6, 1>;
   struct State {
-    Vector5d mean;
-    Matrix5d covariance;
+    Vector6d mean;
+    Matrix6d covariance;
   };
   // The state with the map offset carried on to a prior of map sigma `mapSigma` here.
   State atPrior(double mapSigma) const;
 
-  Vector5d state_ = Vector5d::Zero();  // x, y, yaw, map offset x, y
-  Matrix5d covariance_ = Matrix5d::Zero();
+  Vector6d state_ = Vector6d::Zero();  // x, y, yaw, map offset x, y, yaw drift
+  Matrix6d covariance_ = Matrix6d::Zero();
   double mapErrorLength_ = 0.0;
   bool hasMapOffset_ = false;
   double metresSinceOffset_ = 0.0;

@@ -128,10 +128,12 @@ SolveSummary PriorStage::finish(const Odometry& odometry) {
     const PoseGraphOptions likeliest = driftModels_->likeliest();
     if (likeliest.odometryTranslationSigmaPerM != config_.graph.odometryTranslationSigmaPerM ||
         likeliest.odometryRotationSigmaDegPerM != config_.graph.odometryRotationSigmaDegPerM ||
-        likeliest.mapErrorLength != config_.graph.mapErrorLength) {
+        likeliest.mapErrorLength != config_.graph.mapErrorLength ||
+        likeliest.odometryYawDriftSigmaDegPer100m != config_.graph.odometryYawDriftSigmaDegPer100m) {
       config_.graph.odometryTranslationSigmaPerM = likeliest.odometryTranslationSigmaPerM;
       config_.graph.odometryRotationSigmaDegPerM = likeliest.odometryRotationSigmaDegPerM;
       config_.graph.mapErrorLength = likeliest.mapErrorLength;
+      config_.graph.odometryYawDriftSigmaDegPer100m = likeliest.odometryYawDriftSigmaDegPer100m;
       rebuild(odometry);
     }
   }

@@ -134,7 +134,8 @@ json driftModelJson(const PoseGraphOptions& g, const std::vector<DriftModelLikel
   if (!candidates.empty()) {
     json list = json::array();
     for (const auto& c : candidates) {
-      list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength}, {"log_likelihood", c.logLikelihood},
+      list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength},
+                      {"yaw_drift_sigma_deg_per_100m", c.yawDriftSigmaDegPer100m}, {"log_likelihood", c.logLikelihood},
                       {"chosen", c.chosen}});
     }
     out["candidates"] = list;
