@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include <ceres/ceres.h>
@@ -38,7 +37,7 @@ PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>())
   impl_->problem.SetParameterBlockConstant(impl_->zeroOffset.data());
   impl_->problem.AddParameterBlock(&impl_->yawDrift, 1);
   if (yawDriftIsState()) {
-    const double sigma = options_.odometryYawDriftSigmaDegPer100m * std::numbers::pi / 180.0 / 100.0;
+    const double sigma = options_.odometryYawDriftSigmaDegPer100m * kRadPerMetrePerDegPer100m;
     impl_->problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma}), nullptr,
                                     &impl_->zeroYawDrift, &impl_->yawDrift);
     impl_->problem.SetParameterBlockConstant(&impl_->zeroYawDrift);
@@ -179,7 +178,7 @@ double PoseGraph::odometryScale(size_t i) const {
   return *scaleBlock(i);
 }
 
-double PoseGraph::odometryYawDrift() const { return impl_->yawDrift * 180.0 / std::numbers::pi * 100.0; }
+double PoseGraph::odometryYawDrift() const { return impl_->yawDrift / kRadPerMetrePerDegPer100m; }
 
 std::vector<SE3> PoseGraph::poses() const {
   std::vector<SE3> out;

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 #include <Eigen/Core>
@@ -12,6 +13,9 @@
 namespace hdprior {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+// Degrees per 100 m (PoseGraphOptions::odometryYawDriftSigmaDegPer100m) in radians per metre.
+inline constexpr double kRadPerMetrePerDegPer100m = std::numbers::pi / 180.0 / 100.0;
 
 struct PoseGraphOptions {
   double priorHuber = 1.0;     // robust (Huber) loss on prior residuals, in whitened units

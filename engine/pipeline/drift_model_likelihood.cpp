@@ -70,14 +70,14 @@ std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() cons
 size_t DriftModelLikelihood::pick() const {
   double best = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates_) best = std::max(best, c.logLikelihood);
+  // Within the margin the simpler model: no yaw drift state, then the least drift.
+  const auto simpler = [](const Candidate& a, const Candidate& b) {
+    return a.yawDriftSigmaDegPer100m != b.yawDriftSigmaDegPer100m ? a.yawDriftSigmaDegPer100m < b.yawDriftSigmaDegPer100m
+                                                                   : a.factor < b.factor;
+  };
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
     if (candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
-    // Within the margin the simpler model: no yaw drift state, then the least drift.
-    const auto simpler = [](const Candidate& a, const Candidate& b) {
-      return a.yawDriftSigmaDegPer100m != b.yawDriftSigmaDegPer100m ? a.yawDriftSigmaDegPer100m < b.yawDriftSigmaDegPer100m
-                                                                     : a.factor < b.factor;
-    };
     if (pick == candidates_.size() || simpler(candidates_[i], candidates_[pick])) pick = i;
   }
   return pick;

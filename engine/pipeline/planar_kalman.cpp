@@ -32,10 +32,6 @@ double chiSquareQuantile(double probability, int dof) {
   return 0.5 * (lo + hi);
 }
 
-namespace {
-constexpr double kRadPerMetrePerDegPer100m = std::numbers::pi / 180.0 / 100.0;
-}  // namespace
-
 PlanarKalman::PlanarKalman(const Eigen::Vector3d& start, double mapErrorLength, double yawDriftSigmaDegPer100m)
     : mapErrorLength_(mapErrorLength) {
   state_.head<3>() = start;
