@@ -54,9 +54,9 @@ int runDemo(const DemoArguments& a) {
     const PipelineRun& run = r.run;
     metrics = r.metrics;
     if (priors) {
-      std::printf("log %s: %zu sweeps, %.0f m; matches %zu accepted, %zu degenerate, %zu rejected; %.1f sweeps/s with priors\n",
-                  log.id().c_str(), run.estimate.size(), metrics.odometry.pathLength, metrics.matches.accepted,
-                  metrics.matches.degenerate, metrics.matches.rejected, double(run.estimate.size()) / run.times.pipelineS);
+      std::printf("log %s: %zu sweeps, %.0f m; priors %s; %.1f sweeps/s with priors\n", log.id().c_str(), run.estimate.size(),
+                  metrics.odometry.pathLength, constraintSummary(metrics.matches.constraints).c_str(),
+                  double(run.estimate.size()) / run.times.pipelineS);
     }
   }
   std::printf("\n| ATE (m)   |  mean  | median |  rmse  |  std   |  max   |\n|-----------|--------|--------|--------|--------|--------|\n");

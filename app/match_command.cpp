@@ -17,6 +17,7 @@
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
 #include "engine/pipeline/config.h"
+#include "engine/pipeline/prior_constraint.h"
 
 namespace hdprior::app {
 namespace {
@@ -112,6 +113,7 @@ int runMatch(const MatchArguments& a) {
               pose(truth).c_str(), pose(initial).c_str(), pose(r.estimate).c_str());
   std::printf("  \"error\": {\"along\": %.4f, \"lateral\": %.4f, \"yaw_deg\": %.4f},\n", e.x(), e.y(), e.z() / kDeg);
   std::printf("  \"status\": \"%s\",\n  \"reason\": \"%s\",\n", toString(r.status), r.reason.c_str());
+  std::printf("  \"constrains\": \"%s\",\n", constraintOf(r).label().c_str());
   std::printf("  \"score\": %.4f,\n  \"score_per_point\": %.5f,\n  \"inlier_ratio\": %.4f,\n  \"gate_chi2\": %.4f,\n",
               r.score, r.scorePerPoint, r.inlierRatio, r.gateChi2);
   std::printf("  \"iterations\": %d,\n  \"time_ms\": %.3f,\n  \"observable_directions\": %d,\n", r.iterations,

@@ -29,9 +29,8 @@ void printSummary(const ArgoverseLog& log, const PipelineRun& run, const RunMetr
   std::printf("odometry ATE rmse %.3f m, max %.3f m, RPE100 %s", m.odometry.ate.translation.rmse,
               m.odometry.ate.translation.max, rpeText(m.odometry).c_str());
   if (m.optimized) {
-    std::printf("; optimized ATE rmse %.3f m, max %.3f m, RPE100 %s; matches %zu accepted, %zu degenerate, %zu rejected",
-                m.optimized->ate.translation.rmse, m.optimized->ate.translation.max, rpeText(*m.optimized).c_str(),
-                m.matches.accepted, m.matches.degenerate, m.matches.rejected);
+    std::printf("; optimized ATE rmse %.3f m, max %.3f m, RPE100 %s; priors %s", m.optimized->ate.translation.rmse,
+                m.optimized->ate.translation.max, rpeText(*m.optimized).c_str(), constraintSummary(m.matches.constraints).c_str());
   }
   if (run.odometryDrift.active()) {
     std::printf("; injected odometry drift: scale %g, yaw %g deg/100 m, pitch %g deg/100 m", run.odometryDrift.scale,

@@ -65,6 +65,7 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> roadPoints, const
   MatchResult r;
   r.initial = initial;
   r.points = points.size();
+  r.curbPoints = curbPoints.size();
   r.staleRegionPoints = selection.droppedPoints;
   bool timedOut = false;
   if (points.size() >= size_t(options_.minPoints)) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -59,6 +60,13 @@ Eigen::Matrix3d boundaryConstraint(const BoundaryDistance& sdf, std::span<const 
     sum += J * J.transpose();
   }
   return sum;
+}
+
+// A figure in a reason, to three significant digits.
+std::string figure(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
 }
 
 void reject(MatchResult& r, const std::string& why) {
@@ -138,17 +146,17 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
   r.status = r.observableDirections == 3 ? MatchStatus::Accepted : MatchStatus::Degenerate;
   r.reason = r.observableDirections == 3 ? "" : std::to_string(3 - r.observableDirections) + " unobservable direction(s)";
   if (points.size() < size_t(o.minPoints)) {
-    reject(r, "too few road points (" + std::to_string(points.size()) + " < " + std::to_string(o.minPoints) + ")");
+    reject(r, "too few road points: " + std::to_string(points.size()) + " < " + std::to_string(o.minPoints));
   } else if (timedOut) {
-    reject(r, "time budget exceeded");
+    reject(r, "time over the budget of " + figure(o.timeBudgetMs) + " ms");
   } else if (r.inlierRatio < o.minInlierRatio) {
-    reject(r, "inlier ratio " + std::to_string(r.inlierRatio) + " below " + std::to_string(o.minInlierRatio));
+    reject(r, "inlier ratio " + figure(r.inlierRatio) + " < " + figure(o.minInlierRatio));
   } else if (r.scorePerPoint < o.minScorePerPoint) {
-    reject(r, "score per point " + std::to_string(r.scorePerPoint) + " below " + std::to_string(o.minScorePerPoint));
+    reject(r, "score per point " + figure(r.scorePerPoint) + " < " + figure(o.minScorePerPoint));
   } else if (r.observableDirections == 0) {
     reject(r, "no observable direction");
   } else if (r.gateChi2 > o.gateChi2) {
-    reject(r, "estimate inconsistent with the prediction (chi2 " + std::to_string(r.gateChi2) + ")");
+    reject(r, "inconsistent with the prediction: chi2 " + figure(r.gateChi2) + " > " + figure(o.gateChi2));
   }
 }
 

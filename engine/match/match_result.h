@@ -50,6 +50,7 @@ struct MatchResult {
   std::vector<Eigen::Vector3d> path;
   double timeMs = 0.0;
   size_t points = 0;             // road points matched
+  size_t curbPoints = 0;         // curb points given to the curb refinement
   size_t staleRegionPoints = 0;  // road points left out in regions where the map disagrees
 };
 

@@ -18,7 +18,8 @@ InnovationGate::Verdict InnovationGate::judge(size_t keyframe, const PosePrior& 
   Verdict v;
   const PlanarKalman::Innovation t = gate_.innovation(prior);
   v.chi2 = t.chi2;
-  if (probability_ > 0.0 && t.dof > 0 && t.chi2 > chiSquareQuantile(probability_, t.dof)) {
+  if (probability_ > 0.0 && t.dof > 0) v.quantile = chiSquareQuantile(probability_, t.dof);
+  if (v.quantile > 0.0 && t.chi2 > v.quantile) {
     v.admitted = followGatedRun(keyframe, prior, v);
     return v;
   }

@@ -34,6 +34,7 @@ class InnovationGate {
   struct Verdict {
     bool admitted = false;
     double chi2 = 0.0;                // against the graph's prediction
+    double quantile = 0.0;            // the chi-square quantile chi2 is held against (0: no gate)
     std::vector<size_t> reanchored;   // admitted: the earlier gated priors of the run that go in with it
   };
   Verdict judge(size_t keyframe, const PosePrior& prior);

@@ -41,6 +41,7 @@ RunMetrics evaluateRun(const PipelineRun& run) {
                                                marginalPlanarInformation(k.prior)));
     }
   }
+  m.matches.constraints = constraintsOf(run.matches);
   m.priorCalibration = calibrateMatches(m.priorErrors);
   return m;
 }

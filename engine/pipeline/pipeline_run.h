@@ -17,6 +17,7 @@
 #include "engine/odom/odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/prior_stage.h"
+#include "engine/pipeline/prior_constraint.h"
 
 namespace hdprior {
 
@@ -87,6 +88,7 @@ PipelineRun runPipeline(const ArgoverseLog& log, const Config& config, const Pip
 
 struct MatchCounts {
   size_t accepted = 0, degenerate = 0, rejected = 0;
+  std::vector<PriorConstraint> constraints;  // one per keyframe: what its prior fixes, or why it has none
 };
 
 // The metrics of a run, anchored at the first pose (as the paper's table), and for the odometry,

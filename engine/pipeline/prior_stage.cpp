@@ -60,6 +60,7 @@ KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const S
 bool PriorStage::gatePrior(KeyframeMatch& m) {
   const InnovationGate::Verdict v = gate_.judge(m.keyframe, m.prior);
   m.innovationChi2 = v.chi2;
+  m.gateQuantile = v.quantile;
   m.gated = !v.admitted;
   m.hasPrior = v.admitted;
   if (!v.admitted) return false;

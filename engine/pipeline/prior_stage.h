@@ -35,6 +35,7 @@ struct KeyframeMatch {
   PosePrior prior;
   double innovationChi2 = 0.0;      // the prior against the graph's prediction (PlanarKalman); 0 without a prior
   bool gated = false;               // the innovation gate left the prior out (`match` is as the matcher gave it)
+  double gateQuantile = 0.0;        // the gate's chi-square quantile for the prior (0: no gate)
 };
 
 // Loads the sweep of an odometry frame.

@@ -10,6 +10,7 @@
 #include "engine/io/file_bytes.h"
 #include "engine/io/ply_writer.h"
 #include "engine/io/tum_trajectory.h"
+#include "engine/pipeline/keyframe_diagnostics.h"
 
 namespace hdprior {
 namespace {
@@ -65,9 +66,15 @@ json calibrationJson(const MatchCalibration& c) {
           {"yaw_deg", directionJson(c.yaw, 180.0 / std::numbers::pi)}};
 }
 
+json constraintJson(const PriorConstraint& c) {
+  return {{"category", c.category()}, {"along", c.along}, {"lateral", c.lateral}, {"yaw", c.yaw}};
+}
+
 json matchJson(const KeyframeMatch& k) {
   const MatchResult& r = k.match;
-  return {{"status", toString(r.status)}, {"reason", r.reason}, {"road_points", r.points}, {"stale_region_points", r.staleRegionPoints},
+  const PriorConstraint c = constraintOf(k);
+  return {{"status", toString(r.status)}, {"reason", r.reason}, {"constrains", c.label()}, {"constraint", constraintJson(c)},
+          {"road_points", r.points}, {"curb_points", r.curbPoints}, {"stale_region_points", r.staleRegionPoints},
           {"initial", planarJson(r.initial)}, {"estimate", planarJson(r.estimate)},
           {"covariance_x_y_yaw", matrixJson(r.covariance)}, {"score", r.score}, {"score_per_point", r.scorePerPoint},
           {"inlier_ratio", r.inlierRatio}, {"gate_chi2", r.gateChi2}, {"observable_directions", r.observableDirections},
@@ -78,11 +85,19 @@ json matchJson(const KeyframeMatch& k) {
                               {"lateral_m", sigmaJson(r.laplaceSigmas.y())},
                               {"yaw_deg", sigmaJson(r.laplaceSigmas.z(), 180.0 / std::numbers::pi)}}},
           {"iterations", r.iterations}, {"time_ms", r.timeMs}, {"prior", k.hasPrior}, {"innovation_chi2", k.innovationChi2},
-          {"gated", k.gated}};
+          {"gated", k.gated}, {"gate_quantile", k.gateQuantile}};
+}
+
+json diagnosticsJson(const KeyframeDiagnostic& d) {
+  json out = json::object();
+  for (size_t f = 0; f < kDiagnosticFields; ++f) out[diagnosticKey(DiagnosticField(f))] = sigmaJson(d.values[f]);
+  return out;
 }
 
 json keyframesJson(const PipelineRun& run) {
   json keyframes = json::array();
+  const std::vector<KeyframeDiagnostic> diagnostics = keyframeDiagnostics(
+      run.matches, run.optimizedKeyframes, run.groundTruth, [&](size_t f) { return run.sweepOfFrame(f); });
   for (size_t k = 0; k < run.odometry->keyframes().size(); ++k) {
     const Keyframe& kf = run.odometry->keyframes()[k];
     std::vector<double> cov(kf.relativeCovariance.data(), kf.relativeCovariance.data() + 36);
@@ -95,6 +110,7 @@ json keyframesJson(const PipelineRun& run) {
     if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
     if (k < run.odometryScales.size()) j["odometry_scale_error"] = run.odometryScales[k];
     if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
+    if (k < diagnostics.size()) j["diagnostics"] = diagnosticsJson(diagnostics[k]);
     if (k < run.matches.size() && run.groundTruth.covers(kf.timestampNs)) {
       const Eigen::Vector3d e = planarError(planarPose(run.groundTruth.at(kf.timestampNs)), run.matches[k].match.estimate);
       j["match_error"] = {{"along_m", e.x()}, {"lateral_m", e.y()}, {"yaw_deg", e.z() * 180.0 / std::numbers::pi}};
@@ -176,7 +192,9 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
   if (metrics.optimized) {
     m["optimized"] = evaluationJson(*metrics.optimized);
     m["matches"] = {{"accepted", metrics.matches.accepted}, {"degenerate", metrics.matches.degenerate},
-                    {"rejected", metrics.matches.rejected}};
+                    {"rejected", metrics.matches.rejected}, {"constraints", json::object()},
+                    {"summary", constraintSummary(metrics.matches.constraints)}};
+    for (const auto& [category, n] : countConstraints(metrics.matches.constraints)) m["matches"]["constraints"][category] = n;
     m["odometry_drift_model"] = driftModelJson(run.graphOptions, run.driftModelCandidates);
     if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
     if (run.graphOptions.odometryYawDriftSigmaDegPer100m > 0) m["odometry_yaw_drift_deg_per_100m"] = run.odometryYawDrift;

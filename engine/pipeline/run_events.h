@@ -1,0 +1,30 @@
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "engine/pipeline/keyframe_diagnostics.h"
+
+namespace hdprior {
+
+struct SkippedSweep;
+
+// A place in a run worth looking at, for the bench to jump to.
+struct RunEvent {
+  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep };
+  Kind kind = Kind::Rejected;
+  size_t keyframe = 0, frame = 0;  // frame: the log's sweep index; a skipped sweep's keyframe is the one before it
+  std::string detail;              // the reason, "lateral + yaw -> full", "lateral 0.52 m > 3 x 0.12 m", the problem
+};
+
+// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep".
+const char* toString(RunEvent::Kind kind);
+
+// A run's events in frame order: rejected and gated priors, a change in what consecutive priors fix,
+// a prior's error beyond 3 of its sigmas (where the truth is known), and skipped sweeps.
+std::vector<RunEvent> runEvents(const std::vector<KeyframeDiagnostic>& keyframes, const std::vector<SkippedSweep>& skipped);
+
+// "event I keyframe K frame F KIND DETAIL", the script command `events`'s line.
+std::string eventLine(size_t index, const RunEvent& event);
+
+}  // namespace hdprior
