@@ -44,9 +44,12 @@ Analysis analysisOf(const Session& session) {
   const std::vector<SE3> poses = session.keyframePoses();
   const auto& keyframes = session.odometry().keyframes();
   for (size_t k = 0; k < keyframes.size() && k < poses.size(); ++k)
-    a.keyframes.push_back({.keyframe = k, .frame = session.sweepOfFrame(keyframes[k].frame), .pose = poses[k], .status = std::nullopt});
+    a.keyframes.push_back({.keyframe = k, .frame = session.sweepOfFrame(keyframes[k].frame), .pose = poses[k], .constraint = std::nullopt});
   for (const KeyframeMatch& m : session.matches())
-    if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].status = m.gated ? MatchStatus::Rejected : m.match.status;  // as the graph took it
+    if (m.keyframe < a.keyframes.size()) a.keyframes[m.keyframe].constraint = constraintOf(m);
+  a.diagnostics = keyframeDiagnostics(session.matches(), poses, session.groundTruth(),
+                                      [&](size_t f) { return session.sweepOfFrame(f); });
+  a.events = runEvents(a.diagnostics, session.skippedSweeps());
   return a;
 }
 

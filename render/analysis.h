@@ -6,7 +6,10 @@
 #include "engine/geom/pose_trajectory.h"
 #include "engine/match/cost_landscape.h"
 #include "engine/match/match_result.h"
+#include "engine/pipeline/keyframe_diagnostics.h"
 #include "engine/pipeline/keyframe_inspection.h"
+#include "engine/pipeline/prior_constraint.h"
+#include "engine/pipeline/run_events.h"
 
 namespace hdprior {
 class HdMap;
@@ -19,7 +22,7 @@ namespace hdprior::render {
 struct KeyframeMark {
   size_t keyframe = 0, frame = 0;
   SE3 pose = SE3::Identity();
-  std::optional<MatchStatus> status;  // none: odometry only
+  std::optional<PriorConstraint> constraint;  // as the graph took it; none: odometry only
 };
 
 // What the pipeline and the tuning bench computed, for the analysis layers to draw (trajectories,
@@ -36,6 +39,8 @@ struct Analysis {
   std::vector<double> fileError;
   std::string fileName;
   std::vector<KeyframeMark> keyframes;
+  std::vector<KeyframeDiagnostic> diagnostics;         // one per matched keyframe
+  std::vector<RunEvent> events;
   std::optional<KeyframeInspection> inspection;        // the selected keyframe
   std::optional<CostLandscape> landscape;              // around the inspection's match estimate
 };

@@ -6,6 +6,7 @@
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
+#include "engine/pipeline/diagnostic_plots.h"
 #include "render/layer_registry.h"
 #include "render/snapshot.h"
 
@@ -89,6 +90,30 @@ void AppState::inspectKeyframe(size_t k) {
 
 void AppState::matchKeyframeAtFrame() {
   if (const auto k = bench_->keyframeAtFrame(frame().index)) inspectKeyframe(*k);
+}
+
+bool AppState::goToEvent(int direction) {
+  const std::vector<RunEvent>& events = bench_->analysis().events;
+  const auto next = stepEvent(events, currentEvent, frame().index, direction);
+  if (!next) return false;
+  currentEvent = *next;
+  const RunEvent& e = events[*next];
+  if (e.kind == RunEvent::Kind::SkippedSweep) goToFrame((long long)e.frame);
+  else inspectKeyframe(e.keyframe);
+  return true;
+}
+
+void AppState::addBookmark(std::string note) { bookmarks.push_back({frame().index, std::move(note)}); }
+
+void AppState::setPlotShown(const std::string& name, bool shown) {
+  std::vector<std::string> next;
+  for (const DiagnosticPlot& p : diagnosticPlots())
+    if (p.name == name ? shown : plotShown(p.name)) next.push_back(p.name);
+  shownPlots = std::move(next);
+}
+
+bool AppState::plotShown(const std::string& name) const {
+  return std::find(shownPlots.begin(), shownPlots.end(), name) != shownPlots.end();
 }
 
 render::Layer* AppState::layer(const std::string& name) {

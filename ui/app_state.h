@@ -9,6 +9,7 @@
 #include "engine/error.h"
 #include "render/renderer.h"
 #include "render/scene.h"
+#include "ui/event_navigation.h"
 #include "ui/layer_visibility.h"
 #include "ui/playback.h"
 #include "ui/tuning_bench.h"
@@ -70,6 +71,14 @@ class AppState {
   void inspectKeyframe(size_t k);
   // The same for the keyframe nearest the current frame.
   void matchKeyframeAtFrame();
+  // The run's event after (direction +1) or before (-1) the current one: selects and matches its
+  // keyframe (a skipped sweep: goes to its frame). False when there is none that way.
+  bool goToEvent(int direction);
+  // A bookmark at the current frame.
+  void addBookmark(std::string note);
+  // Shows or hides a Diagnostics plot (a name of diagnosticPlots()); the shown keep the bench's order.
+  void setPlotShown(const std::string& name, bool shown);
+  bool plotShown(const std::string& name) const;
   // The window as drawn, to this PNG after the next draw (the viewer takes it).
   void requestScreenshot(const std::filesystem::path& file) { screenshotRequest = file; }
 
@@ -81,6 +90,9 @@ class AppState {
   bool focusOnMatch = true;    // matching a keyframe turns the camera top-down onto it
   std::string selectTab;       // the bench tab to bring to the front on the next frame
   std::optional<std::filesystem::path> screenshotRequest;
+  std::vector<std::string> shownPlots;   // the Diagnostics plots shown, in diagnosticPlots() order
+  std::vector<Bookmark> bookmarks;
+  std::optional<size_t> currentEvent;    // the event last gone to
 
  private:
   LoadedLog loaded_;

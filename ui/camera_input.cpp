@@ -35,6 +35,11 @@ void handleKeys(AppState& state) {
   if (ImGui::IsKeyPressed(GLFW_KEY_END, false)) state.goToFrame((long long)state.frameCount() - 1);
   if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) state.playback.toggle();
   if (ImGui::IsKeyPressed(GLFW_KEY_T, false)) camera.topDown = !camera.topDown;
+  if (ImGui::IsKeyPressed(GLFW_KEY_N, false)) state.goToEvent(io.KeyShift ? -1 : 1);
+  if (ImGui::IsKeyPressed(GLFW_KEY_B, false)) {
+    state.addBookmark("");
+    state.selectTab = "Events";
+  }
   const Eigen::Vector3d ego = state.frame().cityTEgo.translation() - state.scene().origin;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
     camera.followEgo = !camera.followEgo;

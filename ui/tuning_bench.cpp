@@ -24,6 +24,7 @@ std::string sessionReport(TuningBench& bench, const Session* session) {
                 session->odometry().keyframes().size());
   out += line;
   for (const SkippedSweep& s : session->skippedSweeps()) out += "bench: skipped " + s.file.string() + ": " + s.problem + "\n";
+  if (!session->matches().empty()) out += "priors: " + constraintSummary(constraintsOf(session->matches())) + "\n";
   if (const auto& in = bench.inspection()) {
     const MatchResult& r = in->match;
     const double deg = 180.0 / M_PI;
@@ -33,6 +34,7 @@ std::string sessionReport(TuningBench& bench, const Session* session) {
                   in->keyframe, in->frame, toString(r.status), in->start.x(), in->start.y(), in->start.z() * deg,
                   r.estimate.x(), r.estimate.y(), r.estimate.z() * deg, r.score, r.iterations, r.path.size());
     out += line;
+    out += "match constrains: " + constraintOf(r).label() + "\n";
     if (in->truth) {
       const Eigen::Vector3d e = planarError(*in->truth, r.estimate);
       std::snprintf(line, sizeof line, "match error: along %.4f lateral %.4f yaw_deg %.4f\n", e.x(), e.y(), e.z() * deg);

@@ -8,6 +8,7 @@
 
 #include "engine/error.h"
 #include "engine/io/file_bytes.h"
+#include "engine/pipeline/diagnostic_plots.h"
 #include "render/layer_registry.h"
 #include "ui/playback.h"
 
@@ -51,7 +52,8 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
       {"frame", {1, 1}}, {"step", {1, 1}}, {"play", {1, 1}}, {"pause", {0, 0}}, {"view", {1, 1}}, {"layer", {2, 2}},
       {"opacity", {2, 2}}, {"wait", {1, 1}}, {"screenshot", {1, 1}}, {"exit", {0, 0}}, {"run", {0, 0}},
       {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"offset", {3, 3}},
-      {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}};
+      {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}, {"plot", {2, 2}},
+      {"events", {0, 0}}, {"next-event", {0, 0}}, {"prev-event", {0, 0}}, {"bookmark", {1, 64}}};
   const auto it = arity.find(verb);
   if (it == arity.end()) return "unknown command '" + verb + "'";
   const auto [least, most] = it->second;
@@ -70,7 +72,9 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
   if (verb == "keyframe" && (!isInteger(a[0]) || a[0][0] == '-')) return "'keyframe' needs a non-negative integer";
   if (verb == "offset" && !std::all_of(a.begin(), a.end(), isNumber)) return "'offset' needs three numbers";
   if (verb == "tab" && std::find(kBenchTabs.begin(), kBenchTabs.end(), a[0]) == kBenchTabs.end())
-    return "'tab' needs Pipeline, NDT, PGO, Keyframe or Export";
+    return "'tab' needs Pipeline, NDT, PGO, Keyframe, Events or Export";
+  if (verb == "plot" && !findDiagnosticPlot(a[0])) return "unknown plot '" + a[0] + "' (" + diagnosticPlotNames() + ")";
+  if (verb == "plot" && a[1] != "on" && a[1] != "off") return "'plot' needs on or off";
   if (verb == "odometry" && a.size() > 1 && a[1] != "auto" && a[1] != "tum" && a[1] != "kitti")
     return "'odometry' needs the format auto, tum or kitti";
   if (verb == "odometry" && a.size() > 2 && a[2] != "first" && a[2] != "city") return "'odometry' needs the frame first or city";

@@ -24,12 +24,19 @@ namespace hdprior::ui {
 //   match                       the same for the keyframe nearest the current frame
 //   offset DX DY DYAW_DEG       the tuning panel's start offset (forward, left, yaw); re-matches
 //   optimize                    "optimise now" with the tuned prior and graph options
-//   tab Pipeline|NDT|PGO|Keyframe|Export   bring a bench tab to the front
+//   tab Pipeline|NDT|PGO|Keyframe|Events|Export   bring a bench tab to the front
 //   report                      print what the bench shows (odometry, match, solve, ATE) to stdout
 //   odometry FILE [auto|tum|kitti] [first|city]   open a trajectory file as the odometry (the
 //                               Pipeline tab's Open; a bad file stops the script with its error)
 //   use-odometry file|builtin   the Pipeline tab's checkbox: the next run over the file or not
-inline constexpr std::array<const char*, 5> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Export"};
+// The debugging bench:
+//   plot NAME on|off            show or hide a Diagnostics plot (score, inliers, road_points, curb_points,
+//                               sigma_along, sigma_lateral, sigma_yaw, chi2, residual, error_along,
+//                               error_lateral, error_yaw, ate_along, ate_lateral)
+//   events                      print the run's events: `event I keyframe K frame F KIND DETAIL`
+//   next-event / prev-event     go to the next / previous event (N / Shift+N); prints `frame F`
+//   bookmark NOTE...            a bookmark at the current frame (B)
+inline constexpr std::array<const char*, 6> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Events", "Export"};
 
 struct ScriptCommand {
   std::string verb;

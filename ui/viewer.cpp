@@ -181,6 +181,24 @@ bool Viewer::runBenchCommand(const ScriptCommand& c) {
     state_->selectTab = c.args[0];
   } else if (c.verb == "report") {
     std::printf("%s", benchReport(bench).c_str());
+    std::string plots;
+    for (const std::string& p : state_->shownPlots) plots += " [" + p + "]";
+    std::printf("diagnostic plots:%s\nevents: %zu, bookmarks: %zu\n", plots.c_str(), bench.analysis().events.size(),
+                state_->bookmarks.size());
+  } else if (c.verb == "plot") {
+    state_->setPlotShown(c.args[0], c.args[1] == "on");
+  } else if (c.verb == "events") {
+    const auto& events = bench.analysis().events;
+    for (size_t i = 0; i < events.size(); ++i) std::printf("%s\n", eventLine(i, events[i]).c_str());
+  } else if (c.verb == "next-event" || c.verb == "prev-event") {
+    if (state_->goToEvent(c.verb == "next-event" ? 1 : -1)) bench.waitForLandscape();
+    state_->pollBench();
+    std::printf("frame %zu\n", state_->frame().index);
+  } else if (c.verb == "bookmark") {
+    std::string note;
+    for (const std::string& word : c.args) note += (note.empty() ? "" : " ") + word;
+    state_->addBookmark(note);
+    std::printf("bookmark %zu frame %zu %s\n", state_->bookmarks.size() - 1, state_->frame().index, note.c_str());
   } else {
     return false;
   }
@@ -251,7 +269,7 @@ void Viewer::frame() {
     const int stride = moving && options_.interactivePoints > 0
                            ? int(std::max<size_t>(1, (points + options_.interactivePoints - 1) / options_.interactivePoints))
                            : 1;
-    state_->renderer().setOverlayInsets(viewInsets(ImGui::GetIO().DisplayFramebufferScale.x));
+    state_->renderer().setOverlayInsets(viewInsets(ImGui::GetIO().DisplayFramebufferScale.x, state_->shownPlots.size()));
     const uint64_t key = options_.cacheView ? state_->renderer().viewKey(camera) * 31 + uint64_t(stride) : ++uncachedFrames_;
     viewCache_->present(key, w, h, [&] { state_->renderer().draw(camera, w, h, stride); });
   } else {

@@ -8,21 +8,18 @@
 #include "render/scene.h"
 
 namespace hdprior::render {
-namespace {
 
-int statusIndex(const std::optional<MatchStatus>& status) {
-  if (!status) return 3;
-  return *status == MatchStatus::Accepted ? 0 : *status == MatchStatus::Degenerate ? 1 : 2;
+KeyframesLayer::KeyframesLayer() {
+  for (size_t c = 0; c < kConstraintClasses; ++c) colours_[c] = constraintColour(ConstraintClass(c));
 }
-
-}  // namespace
 
 void KeyframesLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
   std::vector<ColoredVertex> dots, ring;
-  for (int s = 0; s < 4; ++s) {
+  for (size_t c = 0; c < kConstraintClasses; ++c) {
     for (const KeyframeMark& mark : analysis.keyframes)
-      if (statusIndex(mark.status) == s) dots.push_back({scene.local(mark.pose.translation()), Eigen::Vector4f::Ones()});
-    rangeEnd_[size_t(s)] = dots.size();
+      if (constraintClass(mark.constraint) == ConstraintClass(c))
+        dots.push_back({scene.local(mark.pose.translation()), Eigen::Vector4f::Ones()});
+    rangeEnd_[c] = dots.size();
   }
   if (analysis.inspection && analysis.inspection->keyframe < analysis.keyframes.size())
     ring.push_back({scene.local(analysis.keyframes[analysis.inspection->keyframe].pose.translation()), Eigen::Vector4f::Ones()});
@@ -37,14 +34,24 @@ void KeyframesLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
 void KeyframesLayer::draw(const DrawContext& context) const {
   if (!dots_) return;
   if (highlight_->size() > 0) drawColored(context, *highlight_, Primitive::Points, 2.0f * size_, true, highlightColor_);
-  const Eigen::Vector4f* colors[] = {&accepted_, &degenerate_, &rejected_, &none_};
-  drawRanges(context, *dots_, Primitive::Points, size_, true, rangeEnd_, colors);
+  std::array<const Eigen::Vector4f*, kConstraintClasses> colours;
+  for (size_t c = 0; c < kConstraintClasses; ++c) colours[c] = &colours_[c];
+  drawRanges(context, *dots_, Primitive::Points, size_, true, rangeEnd_, colours);
 }
 
 std::vector<LayerOption> KeyframesLayer::options() {
-  return {LayerOption::slider("size", &size_, 2.0f, 16.0f), LayerOption::colorPicker("accepted", &accepted_),
-          LayerOption::colorPicker("degenerate", &degenerate_), LayerOption::colorPicker("rejected", &rejected_),
-          LayerOption::colorPicker("no prior", &none_), LayerOption::colorPicker("inspected", &highlightColor_)};
+  std::vector<LayerOption> o = {LayerOption::slider("size", &size_, 2.0f, 16.0f)};
+  for (size_t c = 0; c < kConstraintClasses; ++c) o.push_back(LayerOption::colorPicker(kConstraintClassNames[c], &colours_[c]));
+  o.push_back(LayerOption::colorPicker("inspected", &highlightColor_));
+  return o;
+}
+
+// The classes the run has, so that the legend says what each dot's colour means.
+std::vector<MarkerKey> KeyframesLayer::markerKeys() const {
+  std::vector<MarkerKey> keys;
+  for (size_t c = 0, first = 0; c < kConstraintClasses; first = rangeEnd_[c++])
+    if (rangeEnd_[c] > first) keys.push_back({std::string("keyframe: ") + kConstraintClassNames[c], colours_[c]});
+  return keys;
 }
 
 }  // namespace hdprior::render

@@ -17,7 +17,7 @@ void drawBenchPanel(AppState& state) {
       const char* name;
       void (*draw)(AppState&);
     } tabs[] = {{"Pipeline", drawPipelineTab}, {"NDT", drawNdtTab}, {"PGO", drawPgoTab},
-                {"Keyframe", drawKeyframeTab}, {"Export", drawExportTab}};
+                {"Keyframe", drawKeyframeTab}, {"Events", drawEventsTab}, {"Export", drawExportTab}};
     for (const auto& tab : tabs) {
       const bool select = state.selectTab == tab.name;
       if (ImGui::BeginTabItem(tab.name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) {

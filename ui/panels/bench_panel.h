@@ -4,7 +4,8 @@ namespace hdprior::ui {
 class AppState;
 
 // The tuning bench on the right: tabs Pipeline (run / step / cancel), NDT (matcher parameters, match
-// this keyframe, cost landscape), PGO (optimise now), Keyframe (inspector) and Export.
+// this keyframe, cost landscape), PGO (optimise now), Keyframe (inspector), Events (events and
+// bookmarks) and Export.
 void drawBenchPanel(AppState& state);
 
 // Each tab's contents (one file each).
@@ -12,6 +13,7 @@ void drawPipelineTab(AppState& state);
 void drawNdtTab(AppState& state);
 void drawPgoTab(AppState& state);
 void drawKeyframeTab(AppState& state);
+void drawEventsTab(AppState& state);
 void drawExportTab(AppState& state);
 
 }  // namespace hdprior::ui

@@ -11,6 +11,8 @@
 #include "engine/geom/se2.h"
 #include "engine/graph/pose_prior.h"
 #include "engine/odom/odometry.h"
+#include "engine/pipeline/prior_constraint.h"
+#include "render/constraint_palette.h"
 #include "ui/app_state.h"
 #include "ui/panels/bench_panel.h"
 
@@ -19,26 +21,33 @@ namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-ImVec4 statusColor(MatchStatus s) {
-  switch (s) {
-    case MatchStatus::Accepted: return ImVec4(0.35f, 0.85f, 0.35f, 1.0f);
-    case MatchStatus::Degenerate: return ImVec4(1.0f, 0.75f, 0.2f, 1.0f);
-    case MatchStatus::Rejected: return ImVec4(1.0f, 0.35f, 0.3f, 1.0f);
+ImVec4 constraintColor(render::ConstraintClass c) {
+  const Eigen::Vector4f v = render::constraintColour(c);
+  return ImVec4(v.x(), v.y(), v.z(), v.w());
+}
+
+// The colours of the status legend, the list and the plots' markers (render/constraint_palette.h).
+void drawLegend() {
+  for (size_t c = 0; c < render::kConstraintClasses; ++c) {
+    if (c > 0) ImGui::SameLine();
+    ImGui::TextColored(constraintColor(render::ConstraintClass(c)), "%s", c == 1 ? "partial" : render::kConstraintClassNames[c]);
   }
-  return ImVec4(1, 1, 1, 1);
 }
 
 void drawKeyframeList(AppState& state, const Session& session) {
   const auto& matches = session.matches();
   const auto& keyframes = session.odometry().keyframes();
+  ImGui::TextWrapped("priors: %s", constraintSummary(constraintsOf(matches)).c_str());
+  drawLegend();
   ImGui::BeginChild("keyframes", ImVec2(0, 150), true);
   for (size_t k = 0; k < keyframes.size(); ++k) {
-    char label[96];
-    const char* status = k < matches.size() ? toString(matches[k].match.status) : "no match";
-    std::snprintf(label, sizeof label, "%3zu  frame %4zu  %s", k, session.sweepOfFrame(keyframes[k].frame), status);
-    if (k < matches.size()) ImGui::PushStyleColor(ImGuiCol_Text, statusColor(matches[k].match.status));
-    if (ImGui::Selectable(label, state.bench().selected() == k)) state.inspectKeyframe(k);
-    if (k < matches.size()) ImGui::PopStyleColor();
+    std::optional<PriorConstraint> c;
+    if (k < matches.size()) c = constraintOf(matches[k]);
+    const std::string label = std::to_string(k) + "  frame " + std::to_string(session.sweepOfFrame(keyframes[k].frame)) + "  " +
+                              (c ? c->label() : "no match");
+    ImGui::PushStyleColor(ImGuiCol_Text, constraintColor(render::constraintClass(c)));
+    if (ImGui::Selectable(label.c_str(), state.bench().selected() == k)) state.inspectKeyframe(k);
+    ImGui::PopStyleColor();
   }
   ImGui::EndChild();
 }
@@ -61,8 +70,10 @@ std::string bounded(double v) {
 
 void drawMatch(const KeyframeInspection& in) {
   const MatchResult& r = in.match;
-  ImGui::TextColored(statusColor(r.status), "%s", toString(r.status));
-  if (!r.reason.empty()) ImGui::TextWrapped("(%s)", r.reason.c_str());
+  const PriorConstraint constraint = constraintOf(r);
+  ImGui::PushStyleColor(ImGuiCol_Text, constraintColor(render::constraintClass(constraint)));
+  ImGui::TextWrapped("constrains: %s", constraint.label().c_str());
+  ImGui::PopStyleColor();
   ImGui::Text("x %.2f  y %.2f  yaw %.2f deg", r.estimate.x(), r.estimate.y(), r.estimate.z() * kDeg);
   ImGui::Text("score %.1f, inliers %.2f", r.score, r.inlierRatio);
   ImGui::Text("%d iterations, %.1f ms", r.iterations, r.timeMs);
@@ -92,10 +103,11 @@ void drawMatch(const KeyframeInspection& in) {
 void drawPriorResidual(const Session& session, size_t k) {
   if (k >= session.matches().size() || !session.graph()) return;
   const KeyframeMatch& m = session.matches()[k];
-  if (!m.hasPrior) {
-    ImGui::TextWrapped("no prior in the graph (the run's match was rejected: %s)", m.match.reason.c_str());
-    return;
-  }
+  const PriorConstraint c = constraintOf(m);
+  ImGui::PushStyleColor(ImGuiCol_Text, constraintColor(render::constraintClass(c)));
+  ImGui::TextWrapped("the run's prior: %s", c.label().c_str());
+  ImGui::PopStyleColor();
+  if (!m.hasPrior) return;
   const PriorResidual r = priorResidual(m.prior, session.graph()->pose(k));
   ImGui::Text("prior residual in the optimised graph:");
   ImGui::Text("  yaw %.2f deg, chi2 %.2f", r.error(0) * kDeg, r.chi2);

@@ -87,9 +87,7 @@ void drawSessionSummary(AppState& state) {
   for (const SkippedSweep& s : session->skippedSweeps()) {
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.2f, 1.0f), "skipped sweep %zu (unreadable): %s", s.index, s.problem.c_str());
   }
-  size_t counts[3] = {0, 0, 0};
-  for (const KeyframeMatch& m : session->matches()) ++counts[int(m.match.status)];
-  ImGui::Text("matches: %zu accepted, %zu degenerate, %zu rejected", counts[0], counts[1], counts[2]);
+  ImGui::TextWrapped("priors: %s", constraintSummary(constraintsOf(session->matches())).c_str());
   const StageTimes& t = session->times();
   ImGui::Text("time: odometry %.1f s, road points %.1f s", t.odometryS, t.roadPointsS);
   ImGui::Text("      match %.1f s, graph %.1f s", t.matchS, t.graphS);
