@@ -119,6 +119,13 @@ def schema():
     return out
 
 
+def experiment_link(m):
+    # docs/*.md stay undated: an experiment is named by its title and found in the index.
+    with open(os.path.join(ROOT, 'docs', 'experiments', m.group(1) + '.md')) as f:
+        title = f.readline().lstrip('# ').strip()
+    return f'experiment "{title}" in [experiments](experiments/README.md)'
+
+
 def default_of(defaults, section, key):
     v = defaults
     for part in section.split('.') + [key]:
@@ -155,6 +162,7 @@ def main():
         path, struct = MEMBER_STRUCTS.get(member) or STRUCTS.get(sec, (None, None))
         what = member_comment(path, struct, member) if path else ''
         what = NOTES.get(f'{sec}.{key}', what)
+        what = re.sub(r'docs/experiments/(\d{4}-\d\d-\d\d-[a-z0-9-]+)\.md', experiment_link, what)
         what = what.replace('|', '\\|')
         lines.append(f'| `{sec}.{key}` | `{default_of(defaults, sec, key)}` | {rng} | {what} |')
     with open(out_path, 'w') as f:
