@@ -27,20 +27,16 @@ struct PoseGraphOptions {
   double odometryTranslationSigma = 0.0;  // metres
   double odometryRotationSigmaDeg = 0.0;
   // The drift model (engine/graph/odometry_information.h): standard deviations per metre travelled
-  // between the keyframes, added in quadrature to each translation / rotation axis. Measured on the
-  // built-in odometry (town 3, 40 s, 133 keyframe pairs vs ground truth): with the relative
-  // covariance alone the normalised errors are already about right (NEES mean 5.85 for 6 DOF,
-  // per-axis RMS 0.81-1.31, along-track the worst); 1e-4 / 1e-4 keeps them so (NEES 5.67, 0.80-1.30)
-  // and the optimised ATE as it was (0.0320 -> 0.0320 m; 3e-4 / 3e-4: NEES 4.7 but 0.0323 m). Small,
-  // but never zero: a source without covariances (a trajectory file) gets this model alone. An
-  // injected drift widens it (coveringOdometryDrift). With lidar errors (the scene families) the
-  // built-in odometry drifts 0.06-0.32 %; estimateDriftModel lets the final solve take these times
-  // the factor the priors support.
+  // between the keyframes, added in quadrature to each translation / rotation axis. 1e-4 keeps the
+  // built-in odometry's normalised keyframe errors as its relative covariance alone gives them (an
+  // honest NEES) without changing the optimised ATE; small, but never zero, so a source without
+  // covariances still has a model. An injected drift widens it (coveringOdometryDrift), and
+  // estimateDriftModel lets the final solve take these times the factor the priors support.
   double odometryTranslationSigmaPerM = 1e-4;  // fraction of the distance
   double odometryRotationSigmaDegPerM = 1e-4;
   // The same for a trajectory given in a file (hdprior run --odometry), in place of the two above,
-  // which describe the built-in odometry: it carries no covariance of its own, and other lidar
-  // odometries drift 0.5-1 % of the distance (the premise), so 1 % and 1 deg per 100 m.
+  // which describe the built-in odometry: a file carries no covariance of its own, and other lidar
+  // odometries drift 0.5-1 % of the distance, so 1 % and 1 deg per 100 m (chosen a priori, not tuned).
   double givenOdometryTranslationSigmaPerM = 0.01;
   double givenOdometryRotationSigmaDegPerM = 0.01;
   // The odometry's scale error as a state of the graph: every keyframe's odometry step is (1 + s)
@@ -49,19 +45,20 @@ struct PoseGraphOptions {
   // the whole log). A systematic scale error (0.5-1 % for real lidar odometry) makes the along-track
   // error grow with the distance; the drift model above treats each step's error as independent,
   // so where the priors observe the along-track position (a junction, a turn) the graph learns s
-  // and carries the correction on to the straight roads that follow.
+  // and carries the correction on to the straight roads that follow. Off by default: the along-track
+  // priors of one junction share a bias, which s then carries over the whole log
+  // (docs/experiments/2026-12-02-odometry-scale-state.md).
   double odometryScaleSigma = 0.0;
   double odometryScaleSigmaPerSqrtM = 0.0;
   // The odometry's systematic yaw drift as a state: every keyframe step turns b * metres too far left,
   // b one value for the whole log starting at 0 with this standard deviation (degrees per 100 m; 0: no
-  // state, b = 0). Without it a scale state takes a yaw drift through a turn for a scale error (a 0.5
-  // deg per 100 m drift turned the scale learnt from error-free priors from -0.7 % to +1.3 %: README).
-  // With estimateDriftModel the final solve keeps the state only where the priors make it likelier
-  // (DriftModelLikelihood).
+  // state, b = 0). Without it a scale state takes a yaw drift through a turn for a scale error. With
+  // estimateDriftModel the final solve keeps the state only where the priors make it likelier
+  // (DriftModelLikelihood). Off by default (docs/experiments/2026-12-04-yaw-drift-state.md).
   double odometryYawDriftSigmaDegPer100m = 0.0;
   // false: the odometry's own relative covariance (the built-in odometry's registration
-  // covariances) is left out and the drift model alone weighs it, as it weighs a trajectory file;
-  // shows that the two sources then give the same graph (README, Bring your own odometry).
+  // covariances) is left out and the drift model alone weighs it, as it weighs a trajectory file
+  // (then the built-in and the file path give the same graph).
   bool odometryCovariance = true;
   // The map's own error (a prior's mapSigma) as a field correlated along the route over this many
   // metres: neighbouring priors share their map error, so many of them along a street whose
@@ -73,14 +70,14 @@ struct PoseGraphOptions {
   // the field above or independent, under which the run's priors were likeliest
   // (engine/pipeline/drift_model_likelihood.h); false: as configured. It needs the map error field:
   // with independent map errors only, a run of priors sharing one map error looks like drift to it
-  // (README, Odometry and evaluation).
+  // (docs/experiments/2026-12-02-drift-model-estimated.md).
   bool estimateDriftModel = true;
   // The final solve takes the tightest candidate whose likelihood is within this many nats of the
   // likeliest (0: the likeliest). On a drive whose odometry is good the likelihood is flat over the
-  // factors (0.1-0.8 nats between 1x and 100x), and a looser pick lets the priors pull a good
-  // odometry about (a held-out log 0.022 -> 0.072 m). 1 nat is the least evidence that is more than
-  // a bare mention (a Bayes factor of e); it costs logs whose odometry does drift more than
-  // configured but shows it only weakly (README, Unseen data).
+  // factors, and a looser pick lets the priors pull a good odometry about. 1 nat is the least
+  // evidence that is more than a bare mention (a Bayes factor of e); it costs logs whose odometry
+  // drifts more than configured but shows it only weakly
+  // (docs/experiments/2026-12-03-drift-model-margin.md).
   double driftModelMarginNats = 1.0;
 };
 

@@ -28,7 +28,8 @@ struct PosePriorOptions {
   double minSigmaXY = 0.0;       // metres
   double minSigmaYawDeg = 0.0;
   // Added to the match's variance along the vehicle's heading: junction matches, the only ones that
-  // observe it, are 0.1-3 m off along the road while their Laplace sigma says 5-7 cm (README).
+  // observe it, are metres off along the road while their Laplace sigma says centimetres
+  // (docs/experiments/2026-12-02-eleven-log-evaluation.md).
   double alongTrackSigma = 1.0;  // metres; 0 adds nothing
   // false: the prior constrains only the lateral position and yaw (and z), never the position along
   // the vehicle's heading, where NDT matches against a road's drivable area are weakest.

@@ -30,13 +30,13 @@ struct RoadPointOptions {
   // down into that low by gutterRise too, is past the gutter (0: off).
   double gutterRise = 0.03;        // metres
   double gutterWindow = 1.0;       // metres
-  // Seeds: ground points within this of the vehicle's x axis (its own width, about 1.9 m: a vehicle
-  // 0.3 m from a low kerb put 1.5 m seeds on the sidewalk, and whole rings were walked from there) ...
+  // Seeds: ground points within this of the vehicle's x axis (its own width, about 1.9 m: wider seeds
+  // of a vehicle close to a low kerb lie on the sidewalk, and whole rings are walked from there) ...
   double seedHalfWidth = 1.0;
   double seedTolerance = 0.12;     // ... within this of groundZ ...
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
   // Seeds only as far along the lane as its height profile goes on without a kerb up (off: every
-  // seed at road level, also beyond a T-junction's far kerb; measured in the README, Matching).
+  // seed at road level, also beyond a T-junction's far kerb; docs/experiments/2026-12-01-lane-seeds.md).
   bool laneSeeds = true;
   double laneStep = 0.08;          // a rise this far above the lane's height profile ends the lane (kerbs: 0.10-0.20 m)
   double gradeLength = 10.0;       // metres of lane behind a point that give the road's grade there

@@ -9,8 +9,8 @@ namespace hdprior {
 
 enum class MatchBackend { Ndt2d, PclNdt };
 
-// How a scan-to-map match is searched for and judged. Defaults are the ones measured in
-// the README (Matching section).
+// How a scan-to-map match is searched for and judged (docs/method.md, Matching; every key in
+// docs/config.md).
 struct MatchOptions {
   MatchBackend backend = MatchBackend::Ndt2d;
 
@@ -39,7 +39,7 @@ struct MatchOptions {
   bool curbRefinement = true;
   double curbHuber = 0.15;              // metres
   double curbMaxDistance = 1.0;         // metres from the boundary at the NDT estimate
-  int minCurbPoints = 12;               // (20 before curbs at parked cars were left out)
+  int minCurbPoints = 12;               // curbs a match needs for the refinement and the curb evidence
   bool curbLateralOnly = true;          // curbs correct lateral position and yaw only
 
   // --- Covariance and acceptance (both backends) ---
@@ -55,7 +55,7 @@ struct MatchOptions {
   double minBoundaryPoints = 20.0;
   double minInformation = 4.0;          // and the NDT information there at least this (sigma <= 0.5 m)
   int minPoints = 200;
-  double minInlierRatio = 0.85;         // share of points placed on the drivable area (README: A third held-out set)
+  double minInlierRatio = 0.85;         // share of points placed on the drivable area (docs/experiments/2026-12-03-min-inlier-ratio.md)
   // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.
   Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
@@ -83,7 +83,7 @@ struct MatchOptions {
   int evidenceStride = 4;               // every n-th road point is counted
   double evidenceMaxOffset = 3.2;       // metres searched along and across the heading ...
   double evidenceMaxYawDeg = 6.4;       // ... and in yaw; beyond: unbounded
-  double evidenceKappa = 3.0;           // half-width = kappa sigma (tuning family, README: HD-map priors)
+  double evidenceKappa = 3.0;           // half-width = kappa sigma (chosen on the tuning family: docs/experiments/2026-12-02-honest-priors.md)
   double mapSigma = 0.20;               // metres: the drivable polygon's own error against the kerb
   double mapSigmaYawDeg = 0.20;
   double maxSigmaAlong = 1.5;           // metres; a direction less certain than this is reported unobservable

@@ -10,9 +10,9 @@ namespace hdprior {
 struct FeatureOptions {
   int neighbours = 5;               // k
   int sectors = 6;                  // per ring, each picks its own features
-  // Edges are off by default: their registration shortened every simulated step by ~2e-4 of its
-  // length (silhouettes of poles and trees move with the viewpoint); planes alone halve the ATE of
-  // the eleven evaluation drives (README, Odometry). LOAM's values: 2 and 20.
+  // Edges are off by default: their registration shortens every step (silhouettes of poles and trees
+  // move with the viewpoint), and planes alone give the lower ATE
+  // (docs/experiments/2026-12-02-planes-only-odometry.md). LOAM's values: 2 and 20.
   int sharpPerSector = 0;           // edges used as LOAM's "sharp" set
   int lessSharpPerSector = 0;       // edges kept for the map ("less sharp")
   int flatPerSector = 4;            // planes ("flat")
@@ -26,8 +26,8 @@ struct FeatureOptions {
 };
 
 // What the stored sweep points mean, and how to deskew them.
-// "none": points are already motion-compensated to the sweep timestamp (Argoverse 2, measured:
-// see README). "constant_velocity": points are in the ego frame at their own time
+// "none": points are already motion-compensated to the sweep timestamp (Argoverse 2; see
+// docs/formats.md, What the stored points mean). "constant_velocity": points are in the ego frame at their own time
 // (sweep timestamp + offset_ns); they are moved to the sweep timestamp with the predicted motion and
 // re-deskewed with the estimated motion.
 struct DeskewOptions {

@@ -64,7 +64,7 @@ TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
   EXPECT_TRUE(odometryInformation(bad, forward(2.0), o).isApprox(Matrix6d::Identity() * 1e-2));
 }
 
-// The defaults describe the undrifted built-in odometry (README: measured normalised errors).
+// The defaults describe the undrifted built-in odometry (docs/method.md, The pose graph: the drift model).
 TEST(OdometryInformation, DefaultsAreASmallDriftModel) {
   const PoseGraphOptions o;
   EXPECT_GT(o.odometryTranslationSigmaPerM, 0.0);

@@ -1,7 +1,7 @@
 // The cost landscape of simulated keyframes (a procedural-town drive through the Session): at a
 // keyframe on a straight street (the match degenerate along it) it is a ridge along the road. (At
 // this drive's first junction the landscape's maximum lies 3 m from the converged match, with either
-// NDT lookup: the road points there fit the map better off the truth; README, Matching. The maximum
+// NDT lookup: the road points there fit the map better off the truth; docs/experiments/2026-12-01-bilinear-lookup.md. The maximum
 // at the result is tested on a synthetic intersection in cost_landscape_test.cpp.)
 #include <gtest/gtest.h>
 

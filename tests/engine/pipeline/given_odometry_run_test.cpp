@@ -86,8 +86,8 @@ fs::path* GivenOdometryRun::sameModel_ = nullptr;
 // match statuses. With priors the optimised trajectory is the plain run's within 1 mm when the plain
 // run weighs its odometry as a file's is weighed (the drift model alone, "graph.odometry_covariance":
 // false): a TUM file does not carry the registration covariances the built-in odometry adds to its
-// between-factors. With them (the default) the two differ by about 1-2 mm (README, Bring your own
-// odometry).
+// between-factors. With them (the default) the two differ by about 1-2 mm
+// (docs/experiments/2026-12-02-given-odometry.md).
 TEST_F(GivenOdometryRun, TheBuiltInOdometrysOwnTrajectoryReproducesThePlainRun) {
   const fs::path dir = test::freshOutputDir("given_run_reproduce");
   ASSERT_EQ(run(dir / "plain", "").status, 0);
@@ -158,8 +158,8 @@ TEST_F(GivenOdometryRun, KittiLinesAndTheCityFrame) {
 
 // The ground truth degraded as real lidar odometry drifts (0.7 % scale, 0.5 deg/100 m yaw,
 // 0.3 deg/100 m pitch, a seeded random walk) is refined by the priors. On this 45 m straight drive
-// the priors see the lateral error, not the scale (README); the accuracy targets of issue 17 are
-// measured on longer drives in the README.
+// the priors see the lateral error, not the scale; the accuracy on longer drives is measured in
+// docs/experiments/2026-12-02-given-odometry.md.
 TEST_F(GivenOdometryRun, DegradedGroundTruthIsRefined) {
   const fs::path dir = test::freshOutputDir("given_run_degraded");
   const fs::path file = dir / "degraded.tum";

@@ -129,7 +129,7 @@ TEST_F(OdometryDriftRun, ZeroDriftIsThePlainRunBitForBit) {
 }
 
 // With priors, the graph's drift model is widened to cover the injected drift, and the priors take
-// out the lateral part of it (along a straight road they cannot see the scale error: README).
+// out the lateral part of it (along a straight road they cannot see the scale error: docs/method.md).
 TEST_F(OdometryDriftRun, PriorsCorrectTheInjectedDrift) {
   const fs::path out = test::freshOutputDir("drift_run_priors");
   const auto r = run(out, "--odometry-drift 0.007,0.5");

@@ -36,7 +36,7 @@ TEST_F(PriorPipeline, MatchesEveryKeyframeStaysOnTheMapAndIsDeterministic) {
   EXPECT_EQ(run.optimized.size(), run.estimate.size());
   EXPECT_GE(m.matches.accepted + m.matches.degenerate, run.matches.size() * 8 / 10);
   EXPECT_GT(m.matches.accepted, 0u);  // the drive passes junctions
-  // Issue targets that hold on this drive (README: on longer drives the priors do not yet beat
+  // Issue targets that hold on this drive (docs/method.md: on longer drives the priors do not beat
   // the simulated odometry, whose drift is below the matches' along-track error).
   EXPECT_LT(opt.max, 1.0);
   EXPECT_LT(opt.rmse, 0.15);

@@ -56,7 +56,7 @@ TEST(RunCommand, RealLogWithPriorsWritesTheOptimizedTrajectory) {
   const auto& matches = m["matches"];
   EXPECT_EQ(matches["accepted"].get<int>() + matches["degenerate"].get<int>() + matches["rejected"].get<int>(),
             m["keyframes"].get<int>());
-  // The shared real sweep matches within half a metre of the ground truth (README: along-road offset).
+  // The shared real sweep matches within half a metre of the ground truth (the matches' along-road offset there: docs/experiments/2026-11-22-pose-graph-and-ndt-bias.md).
   EXPECT_LT(m["optimized"]["ate_translation_m"]["max"].get<double>(), 0.5);
   for (const char* direction : {"along_m", "lateral_m", "yaw_deg"}) {
     EXPECT_TRUE(m["prior_calibration"][direction].contains("share_beyond_3_sigma")) << direction;
