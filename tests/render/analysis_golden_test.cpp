@@ -149,7 +149,7 @@ TEST_F(AnalysisGolden, AnalysisHoldsPerPoseErrorsAndKeyframesAndRefusesABadKeyfr
   // The simulated drive's keyframes have match statuses and the optimised trajectory its errors.
   const render::Analysis& sim = simulated().analysis;
   ASSERT_GT(sim.keyframes.size(), 2u);
-  EXPECT_TRUE(sim.keyframes.back().status.has_value());
+  EXPECT_TRUE(sim.keyframes.back().constraint.has_value());
   EXPECT_EQ(sim.optimizedError.size(), sim.optimized.size());
   EXPECT_FALSE(sim.landscape->scores.empty());
 }

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "engine/sim/demo_log.h"
 #include "render/image_compare.h"
@@ -371,6 +374,86 @@ INSTANTIATE_TEST_SUITE_P(
                                    "first or city"},
                       BadViewInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// The events a run has, counted from its keyframes.json alone: rejected and gated keyframes, changes in
+// what consecutive used priors fix, and used priors whose error is beyond 3 of their sigmas.
+std::map<std::string, size_t> eventsInKeyframesJson(const fs::path& file) {
+  std::map<std::string, size_t> counts;
+  std::string previous;
+  for (const nlohmann::json& k : nlohmann::json::parse(slurp(file))) {
+    const nlohmann::json& m = k.at("match");
+    const std::string category = m.at("constraint").at("category").get<std::string>();
+    if (category == "rejected" || category == "gated") {
+      ++counts[category];
+      continue;
+    }
+    if (!previous.empty() && previous != category) ++counts["constraint-change"];
+    previous = category;
+    if (!k.contains("prior_error")) continue;
+    const nlohmann::json& e = k.at("prior_error");
+    bool beyond = false;
+    for (const char* axis : {"along_m", "lateral_m", "yaw_deg"}) {
+      const nlohmann::json& sigma = e.at(std::string("sigma_") + axis);
+      beyond |= !sigma.is_null() && std::abs(e.at(axis).get<double>()) > 3.0 * sigma.get<double>();
+    }
+    counts["beyond-3-sigma"] += beyond;
+  }
+  return counts;
+}
+
+size_t redPixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  size_t n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      if (image.pixel(x, y)[0] > 220 && image.pixel(x, y)[1] < 110 && image.pixel(x, y)[2] < 110) ++n;
+  return n;
+}
+
+// The debugging bench: what each prior fixes in the report, Diagnostics plots drawn under the ATE
+// plot (the chi2 plot's red gate line), the run's events equal to what `hdprior run` writes in
+// keyframes.json, next-event going to the first event's frame, a bookmark.
+TEST(ViewCommand, DebuggingBenchPlotsEventsAndBookmarks) {
+  const SimulatedDrive drive = simulatedTownDrive("view_debugging_bench", 1, 7, 12.0);
+  const fs::path dir = freshOutputDir("view_debugging_bench");
+  const fs::path before = dir / "before.png", after = dir / "after.png";
+  writeText(dir / "script.txt", "run\nwait 2\nscreenshot " + before.string() +
+                                    "\nplot chi2 on\nplot sigma_lateral on\nplot error_lateral on\nplot score on\nplot score off\n"
+                                    "plot score on\nevents\nnext-event\nbookmark kerb looks off\nreport\nwait 2\nscreenshot " +
+                                    after.string() + "\n");
+  const CommandResult r = runWithDisplay("view " + quoted(drive.log) + " --script " + quoted(dir / "script.txt"), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("diagnostic plots: [score] [sigma_lateral] [chi2] [error_lateral]\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("priors: "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("degenerate,"), std::string::npos) << r.out;
+
+  const CommandResult run = runHdprior("run " + quoted(drive.log) + " --out " + quoted(dir / "run"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::map<std::string, size_t> expected = eventsInKeyframesJson(dir / "run" / "keyframes.json");
+  std::map<std::string, size_t> shown;
+  std::istringstream lines(r.out);
+  std::vector<long long> eventFrames;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("event ", 0) != 0) continue;
+    std::istringstream words(line);
+    std::string event, index, keyframeWord, keyframe, frameWord, kind;
+    long long frame = 0;
+    words >> event >> index >> keyframeWord >> keyframe >> frameWord >> frame >> kind;
+    EXPECT_EQ(keyframeWord + frameWord, "keyframeframe") << line;
+    ++shown[kind];
+    eventFrames.push_back(frame);
+  }
+  EXPECT_EQ(shown, expected) << r.out;
+  ASSERT_FALSE(eventFrames.empty()) << r.out;  // at least the change from full priors at the start to lateral + yaw
+  EXPECT_NE(r.out.find("frame " + std::to_string(eventFrames.front()) + "\nbookmark 0 frame " +
+                       std::to_string(eventFrames.front()) + " kerb looks off\n"),
+            std::string::npos)
+      << r.out;
+
+  // The plots' band (two rows of 96 px under the 170 px ATE plot, above the timeline) gains the gate's red.
+  const render::Image a = readPng(before), b = readPng(after);
+  const int x0 = 310, x1 = a.width - 360, y0 = a.height - 88 - 192, y1 = a.height - 88;
+  EXPECT_GT(redPixels(b, x0, y0, x1, y1), redPixels(a, x0, y0, x1, y1) + 100) << after;
+}
 
 // Without an X server the window cannot open: one line naming GLFW, never a crash.
 TEST(ViewCommand, WithoutADisplaySaysSo) {
