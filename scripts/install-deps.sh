@@ -9,7 +9,7 @@ set -euo pipefail
 runtime_packages=(libgl1 libgl1-mesa-dri)
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ninja-build ccache
   libeigen3-dev libpcl-dev libceres-dev libgdal-dev gdal-bin
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev libstb-dev
   nlohmann-json3-dev liblz4-dev libzstd-dev
