@@ -4,8 +4,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -62,13 +64,66 @@ CommandResult runHdprior(const std::string& args) {
   return r;
 }
 
+namespace {
+
+// The engine library's build time: shared drives simulated by an older engine are never reused.
+std::string engineBuildStamp() {
+  std::error_code ec;
+  const auto time = fs::last_write_time(HDPRIOR_ENGINE_LIBRARY, ec);
+  return ec ? std::string("unknown") : std::to_string(time.time_since_epoch().count());
+}
+
+// An exclusive lock on a file, held while the object lives (flock: released if the process dies).
+class FileLock {
+ public:
+  explicit FileLock(const fs::path& file) : fd_(::open(file.c_str(), O_CREAT | O_RDWR, 0644)) {
+    if (fd_ < 0 || ::flock(fd_, LOCK_EX) != 0) throw std::runtime_error("cannot lock " + file.string());
+  }
+  ~FileLock() {
+    ::flock(fd_, LOCK_UN);
+    ::close(fd_);
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+fs::path sharedTownDrive(int town, int seed, double seconds) {
+  char key[96];
+  std::snprintf(key, sizeof key, "town%d_seed%d_%gs", town, seed, seconds);
+  const fs::path root = fs::path(HDPRIOR_TEST_OUTPUT) / "shared_drives" / engineBuildStamp();
+  fs::create_directories(root);
+  const fs::path folder = root / key, done = root / (std::string(key) + ".log");
+  FileLock lock(root / (std::string(key) + ".lock"));
+  if (!fs::exists(done)) {  // the first process to get here simulates it; the others wait on the lock
+    fs::remove_all(folder);
+    SimulationOptions sim;
+    sim.townSeed = uint64_t(town);
+    sim.seed = uint64_t(seed);
+    sim.seconds = seconds;
+    sim.outDir = folder;
+    const std::string id = simulateLog(sim).logId;
+    std::ofstream(root / (std::string(key) + ".log.partial")) << id;
+    fs::rename(root / (std::string(key) + ".log.partial"), done);
+  }
+  return folder / readFileText(done);
+}
+
+fs::path copySharedTownDrive(int town, int seed, double seconds, const fs::path& outDir) {
+  const fs::path shared = sharedTownDrive(town, seed, seconds);
+  const fs::path log = outDir / shared.filename();
+  fs::create_directories(outDir);
+  fs::copy(shared, log, fs::copy_options::recursive);
+  return log;
+}
+
 SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, double seconds) {
-  SimulationOptions sim;
-  sim.townSeed = uint64_t(town);
-  sim.seed = uint64_t(seed);
-  sim.seconds = seconds;
-  sim.outDir = freshOutputDir(name + "_" + std::to_string(::getpid()));
-  return {sim.outDir, simulateLog(sim).dir};
+  const fs::path dir = freshOutputDir(name + "_" + std::to_string(::getpid()));
+  return {dir, copySharedTownDrive(town, seed, seconds, dir)};
 }
 
 std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const std::filesystem::path& file, double dx, double dy,

@@ -17,7 +17,17 @@ std::filesystem::path freshOutputDir(const std::string& name);
 struct SimulatedDrive {
   std::filesystem::path folder, log;
 };
+// The log is a copy of the shared drive below, so the test may change it.
 SimulatedDrive simulatedTownDrive(const std::string& name, int town, int seed, double seconds);
+// The log of that drive (simulateLog with townSeed = town, seed, seconds, everything else default),
+// simulated once per ctest run and shared by every test process that asks for it: the first process
+// simulates it into the build tree (output/shared_drives, cleared by the ctest fixture
+// SharedDrives.Clear before a run and keyed by the engine library's build) while the others wait for
+// it. Read only: copy it (copySharedTownDrive) before changing anything in it.
+std::filesystem::path sharedTownDrive(int town, int seed, double seconds);
+// A copy of sharedTownDrive(town, seed, seconds) at outDir/<log id>, as simulateLog would write it;
+// returns outDir/<log id>.
+std::filesystem::path copySharedTownDrive(int town, int seed, double seconds, const std::filesystem::path& outDir);
 // A whole file as bytes in a string (empty if it cannot be read).
 std::string readFileText(const std::filesystem::path& path);
 
