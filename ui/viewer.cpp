@@ -86,7 +86,7 @@ void Viewer::finishLoading() {
     // view --odometry belongs to the log given with it, not to one opened later from the panel.
     if (loadingFromOptions_ && options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
       throw *state_->bench().odometryFile.failure();
-    if (loadingFromOptions_ && options_.session) state_->restore(readViewSession(*options_.session));
+    if (loadingFromOptions_ && options_.session) restoreSession(readViewSession(*options_.session), options_.scripted);
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;
     loadError_ = e.what();
@@ -231,18 +231,25 @@ bool Viewer::runDebugCommand(const ScriptCommand& c) {
     writeViewSession(c.args[0], state_->session());
     std::printf("wrote %s\n", c.args[0].c_str());
   } else if (c.verb == "load-session") {
-    state_->restore(readViewSession(c.args[0]));
-    while (state_->restoring()) {
-      bench.runner().wait();
-      bench.comparison().wait();
-      state_->pollBench();
-    }
-    bench.waitForLandscape();
-    state_->pollBench();
+    restoreSession(readViewSession(c.args[0]), true);
   } else {
     return false;
   }
   return true;
+}
+
+// A script waits for the session's runs, keyframe and landscapes before its next command.
+void Viewer::restoreSession(const ViewSession& session, bool wait) {
+  state_->restore(session);
+  if (!wait) return;
+  TuningBench& bench = state_->bench();
+  while (state_->restoring()) {
+    bench.runner().wait();
+    bench.comparison().wait();
+    state_->pollBench();
+  }
+  bench.waitForLandscape();
+  state_->pollBench();
 }
 
 void Viewer::updateCursor() {

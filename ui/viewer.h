@@ -58,6 +58,7 @@ class Viewer {
   void runScript();
   bool runBenchCommand(const ScriptCommand& command);
   bool runDebugCommand(const ScriptCommand& command);
+  void restoreSession(const ViewSession& session, bool wait);
   void updateCursor();
   void drawPanels();
   void takeScreenshot(const std::filesystem::path& file);

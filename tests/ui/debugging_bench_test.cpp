@@ -66,7 +66,7 @@ const char* kOtherB = R"({"match": {"time_budget_ms": 100000, "outlier_ratio": 0
 // view draws B's trajectory (mint) where it drew none, and `measure match` measures the match from
 // its estimate to the truth (the report's match error, reversed).
 TEST(DebuggingBench, CompareRunsBAsRunDoesAndDrawsIt) {
-  const SimulatedDrive drive = simulatedTownDrive("bench_compare", 1, 7, 12.0);
+  const SimulatedDrive drive = simulatedTownDrive("bench_compare", 1, 7, 8.0);
   const fs::path dir = freshOutputDir("bench_compare");
   const fs::path before = dir / "before.png", after = dir / "after.png";
   writeText(dir / "a.json", kNoBudget);
@@ -159,7 +159,7 @@ TEST(DebuggingBench, MeasureAndPickOnTheRealLog) {
 // with `view --session` gives the same window (the status bar's FPS aside), and `snapshot --session`
 // draws it headless.
 TEST(DebuggingBench, ASavedSessionRestoresTheSameView) {
-  const SimulatedDrive drive = simulatedTownDrive("bench_session", 1, 7, 12.0);
+  const SimulatedDrive drive = simulatedTownDrive("bench_session", 1, 7, 8.0);
   const fs::path dir = freshOutputDir("bench_session");
   const fs::path saved = dir / "saved.png", restored = dir / "restored.png", session = dir / "session.json";
   writeText(dir / "a.json", kNoBudget);
@@ -220,7 +220,7 @@ TEST(DebuggingBench, SnapshotOfASessionMatchesItsGolden) {
   const CommandResult both = runHdprior("snapshot " + quoted(sharedLog()) + " --session " + quoted(dir / "session.json") +
                                         " --frame 0 --out " + quoted(dir / "t.png"));
   EXPECT_EQ(both.status, 2);
-  EXPECT_NE(both.err.find("--session cannot be combined with --frame"), std::string::npos) << both.err;
+  EXPECT_NE(both.err.find("option --session: cannot be combined with --frame"), std::string::npos) << both.err;
   writeText(dir / "bad.json", "{\"hdprior_view_session\": 1, \"log\": 3}");
   const CommandResult bad = runHdprior("snapshot --session " + quoted(dir / "bad.json") + " --out " + quoted(dir / "u.png"));
   EXPECT_EQ(bad.status, 2);
