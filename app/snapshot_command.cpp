@@ -19,6 +19,8 @@
 #include "render/layer_registry.h"
 #include "render/png_writer.h"
 #include "render/snapshot.h"
+#include "ui/tuning_bench.h"
+#include "ui/view_session.h"
 
 namespace hdprior::app {
 namespace {
@@ -43,13 +45,87 @@ bool anyNeedsAnalysis(const std::vector<std::string>& layers) {
 }
 
 struct SnapshotArguments {
-  std::string log, out, size = "1280x720", view = "top", layers, odometry;
+  std::string log, out, size = "1280x720", view = "top", layers, odometry, session;
   std::optional<size_t> frame, keyframe;
   ConfigArguments config;
   OdometryFileArguments odometryFile;
 };
 
+void checkOutput(const std::filesystem::path& out) {
+  const std::filesystem::path outDir = out.parent_path().empty() ? "." : out.parent_path();
+  if (!std::filesystem::is_directory(outDir)) throw Error(out.string(), "its folder does not exist");
+  if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
+}
+
+// The session's visible layers in drawing order, with their opacities; throws for an unknown layer.
+void sessionLayers(const ui::ViewSession& s, const std::string& file, render::SnapshotOptions& options) {
+  std::string list;
+  for (const auto& l : s.layers) {
+    if (!l.visible) continue;
+    list += (list.empty() ? "" : ",") + l.name;
+    options.opacity[l.name] = l.opacity;
+  }
+  try {
+    options.layers = list.empty() ? std::vector<std::string>{} : render::parseLayerList(list);
+  } catch (const Error& e) {
+    throw Error(file, e.what());
+  }
+}
+
+// Run B of the session's comparison: its trajectory and diagnostics, and its match of the keyframe
+// nearest A's inspected one, as the app's Compare tab has them.
+render::Comparison sessionComparison(const ArgoverseLog& log, const ui::ViewSession::Comparison& b, const std::string& file,
+                                     const std::optional<size_t>& frame) {
+  const Config config = parseConfig(b.config, file + " (comparison config)");
+  const std::unique_ptr<HdMap> map = loadPriorMap(log, config);
+  Session session(log, map.get(), config);
+  session.run();
+  session.optimize();
+  render::Comparison comparison = render::comparisonOf(session, b.name);
+  if (const auto k = frame ? ui::keyframeNearFrame(session, *frame) : std::nullopt; k && session.hasPriors()) {
+    render::Analysis inspected;
+    render::inspect(inspected, session, *map, *k);
+    comparison.inspection = std::move(inspected.inspection);
+    comparison.landscape = std::move(inspected.landscape);
+  }
+  return comparison;
+}
+
+// `snapshot --session FILE`: the saved view's frame, camera, layers and runs, headless.
+int runSessionSnapshot(const SnapshotArguments& a) {
+  for (const auto& [given, name] : {std::pair{a.frame.has_value(), "--frame"}, {a.keyframe.has_value(), "--keyframe"},
+                                    {!a.layers.empty(), "--layers"}, {a.view != "top", "--view"},
+                                    {!a.config.file.empty(), "--config"}, {!a.odometry.empty(), "--odometry"}})
+    if (given) throw Error("option --session", std::string("cannot be combined with ") + name + " (the session sets it)");
+  const ui::ViewSession s = ui::readViewSession(a.session);
+  render::SnapshotOptions options;
+  render::parseSize(a.size, options.width, options.height);
+  sessionLayers(s, a.session, options);
+  if (options.layers.empty()) throw Error(a.session, "no layer is visible");
+  checkOutput(a.out);
+  const Config config = parseConfig(s.config, a.session + " (config)");
+  const ArgoverseLog log(a.log.empty() ? s.log : std::filesystem::path(a.log));
+  if (s.frame >= log.sweepCount())
+    throw Error(a.session, "frame " + std::to_string(s.frame) + " is out of range (the log has " + std::to_string(log.sweepCount()) + " sweeps)");
+  const std::unique_ptr<HdMap> map = s.ran ? loadPriorMap(log, config)
+                                           : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
+  render::Analysis analysis = s.ran ? runAnalysis(log, *map, config, s.keyframe, std::nullopt) : render::Analysis{};
+  if (s.comparison) {
+    const std::optional<size_t> frame = analysis.inspection ? std::optional(analysis.inspection->frame) : std::nullopt;
+    analysis.comparison = sessionComparison(log, *s.comparison, a.session, frame);
+  }
+  render::Snapshotter snapshotter(log, *map, options);
+  snapshotter.setAnalysis(std::move(analysis));
+  const render::Camera camera =
+      ui::viewCameraOf(s.camera, snapshotter.scene().origin).camera(double(options.width) / options.height);
+  render::writePng(a.out, snapshotter.render(s.frame, camera));
+  std::printf("wrote %s (%dx%d, frame %zu, session %s)\n", a.out.c_str(), options.width, options.height, s.frame, a.session.c_str());
+  return 0;
+}
+
 int runSnapshot(const SnapshotArguments& a) {
+  if (!a.session.empty()) return runSessionSnapshot(a);
+  if (a.log.empty()) throw Error("option LOG", "missing (the log to draw; or --session FILE)");
   // Check every option before the slow part (map loading, the pipeline).
   render::SnapshotOptions options;
   render::parseSize(a.size, options.width, options.height);
@@ -61,9 +137,7 @@ int runSnapshot(const SnapshotArguments& a) {
   if (inspectorView && !keyframe) throw Error("option --view", "the landscape and inspector views need --keyframe K");
   if (!a.frame && !keyframe) throw Error("option --frame", "missing (the frame to draw)");
   const std::filesystem::path out = a.out;
-  const std::filesystem::path outDir = out.parent_path().empty() ? "." : out.parent_path();
-  if (!std::filesystem::is_directory(outDir)) throw Error(out.string(), "its folder does not exist");
-  if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
+  checkOutput(out);
   const Config config = configOf(a.config);
   const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
 
@@ -100,7 +174,11 @@ Command addSnapshotCommand(CLI::App& hdprior) {
       "snapshot", "one frame drawn headless (OSMesa, no X server) to PNG, with the view's overlay; analysis layers or "
                   "--keyframe run the pipeline (with priors) first");
   auto a = std::make_shared<SnapshotArguments>();
-  addLogArgument(*command, a->log);
+  command->add_option("LOG", a->log, "the log's folder (with --session: default the session's log)");
+  command->add_option("--session", a->session,
+                      "draw a saved `hdprior view` session (its frame, camera, visible layers, runs A and B); "
+                      "--frame, --keyframe, --view, --layers and --config do not apply")
+      ->type_name("FILE");
   addIndexOption(*command, "--frame", a->frame, "the sweep to draw (default with --keyframe: the keyframe's)")->type_name("N");
   addIndexOption(*command, "--keyframe", a->keyframe, "inspect keyframe K: re-match it and its cost landscape")->type_name("K");
   command->add_option("--out", a->out, "the PNG to write")->type_name("FILE.png")->required();

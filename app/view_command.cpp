@@ -13,6 +13,7 @@
 #include "engine/pipeline/config.h"
 #include "engine/sim/demo_log.h"
 #include "render/snapshot.h"
+#include "ui/view_session.h"
 #include "ui/viewer.h"
 
 namespace hdprior::app {
@@ -49,7 +50,7 @@ GivenOdometry checkedOdometryFile(const fs::path& file, const OdometryFileOption
 }
 
 struct ViewArguments {
-  std::string log, script, screenshot, size = "1280x800", config, odometry;
+  std::string log, script, screenshot, size = "1280x800", config, odometry, session;
   OdometryFileArguments odometryFile;
   long long frames = 0;  // 0: not given
   bool exit = false;
@@ -77,8 +78,13 @@ int runView(const ViewArguments& a) {
     options.config = loadConfig(a.config);
     options.configPath = fs::path(a.config);
   }
-  if (!a.log.empty()) {
-    options.log = fs::path(a.log);
+  std::optional<ui::ViewSession> session;
+  if (!a.session.empty()) {
+    session = ui::readViewSession(a.session);  // checked before the window opens
+    options.session = fs::path(a.session);
+  }
+  if (!a.log.empty() || session) {
+    options.log = fs::path(!a.log.empty() ? a.log : session->log.string());
     if (!fs::is_directory(*options.log)) throw Error(options.log->string(), "is not a log directory");
   } else {
     options.log = bundledDemoLog();
@@ -95,7 +101,9 @@ Command addViewCommand(CLI::App& hdprior) {
   CLI::App* command = hdprior.add_subcommand("view", "the desktop app (GLFW, OpenGL 3.3, Dear ImGui) with the tuning bench; "
                                                      "without LOG it opens the demo log");
   auto a = std::make_shared<ViewArguments>();
-  command->add_option("LOG", a->log, "the log's folder (default: the simulator's demo log)");
+  command->add_option("LOG", a->log, "the log's folder (default: the session's log, or the simulator's demo log)");
+  command->add_option("--session", a->session, "restore a saved session (Save session in the app, or save-session in a script): "
+                                               "frame, camera, layers, tab, plots, bookmarks, runs A and B")->type_name("FILE");
   command->add_option("--script", a->script, "run a script, then take the screenshot and quit")->type_name("FILE");
   command->add_option("--frames", a->frames, "take the screenshot after N frames (--exit alone: 1)")->type_name("N")->default_str("")->check(integerAtLeast(1));
   command->add_flag("--exit", a->exit, "quit after --frames N frames");

@@ -53,6 +53,14 @@ Analysis analysisOf(const Session& session) {
   return a;
 }
 
+Comparison comparisonOf(const Session& session, std::string name) {
+  Analysis a = analysisOf(session);
+  const bool priors = !a.optimized.empty();
+  return {.name = std::move(name), .optimized = priors ? std::move(a.optimized) : std::move(a.odometry),
+          .optimizedError = priors ? std::move(a.optimizedError) : std::move(a.odometryError),
+          .diagnostics = std::move(a.diagnostics), .inspection = std::nullopt, .landscape = std::nullopt};
+}
+
 void setFileTrajectory(Analysis& analysis, const PoseTrajectory& truth, PoseTrajectory file, std::string name) {
   analysis.fileError = translationErrors(truth, file);
   analysis.file = std::move(file);

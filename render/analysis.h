@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/geom/ground_measure.h"
 #include "engine/geom/pose_trajectory.h"
 #include "engine/match/cost_landscape.h"
 #include "engine/match/match_result.h"
@@ -25,6 +26,16 @@ struct KeyframeMark {
   std::optional<PriorConstraint> constraint;  // as the graph took it; none: odometry only
 };
 
+// Run B of an A/B comparison: the same log with another configuration, run in the background.
+struct Comparison {
+  std::string name;                                    // the configuration's file name, or "bench parameters"
+  PoseTrajectory optimized;                            // its final trajectory (the odometry's without priors)
+  std::vector<double> optimizedError;                  // ATE translation per sweep, as Analysis::optimizedError
+  std::vector<KeyframeDiagnostic> diagnostics;
+  std::optional<KeyframeInspection> inspection;        // B's match of the keyframe A inspects
+  std::optional<CostLandscape> landscape;              // around B's estimate
+};
+
 // What the pipeline and the tuning bench computed, for the analysis layers to draw (trajectories,
 // keyframes, the selected keyframe's points, match and cost landscape). Plain data; the app and
 // `hdprior snapshot` fill it from a Session.
@@ -43,10 +54,14 @@ struct Analysis {
   std::vector<RunEvent> events;
   std::optional<KeyframeInspection> inspection;        // the selected keyframe
   std::optional<CostLandscape> landscape;              // around the inspection's match estimate
+  std::optional<Comparison> comparison;                // run B, when the user compares
+  std::optional<GroundMeasure> measure;                // the user's measurement, drawn by the measure layer
 };
 
 // The trajectories, per-pose errors and keyframes of a session as it stands.
 Analysis analysisOf(const Session& session);
+// Run B's part of an analysis: its final trajectory with errors and its diagnostics.
+Comparison comparisonOf(const Session& session, std::string name);
 // Sets the trajectory file's name, its poses (city_T_ego at the sweeps) and their errors against `truth`.
 void setFileTrajectory(Analysis& analysis, const PoseTrajectory& truth, PoseTrajectory file, std::string name);
 // Keyframe k inspected with the session's road-point and match options, and the cost landscape

@@ -16,6 +16,7 @@
 #include "render/layers/lane_centerline_layer.h"
 #include "render/layers/lidar_sweep_layer.h"
 #include "render/layers/match_layer.h"
+#include "render/layers/measure_layer.h"
 #include "render/layers/ndt_cells_layer.h"
 #include "render/layers/pedestrian_crossing_layer.h"
 #include "render/layers/road_points_layer.h"
@@ -62,11 +63,14 @@ const std::vector<Entry>& registry() {
       trajectoryEntry(Which::Odometry, EstimatedTrajectoryLayer::kOdometryName),
       trajectoryEntry(Which::Optimized, EstimatedTrajectoryLayer::kOptimizedName),
       trajectoryEntry(Which::File, EstimatedTrajectoryLayer::kFileName),
+      trajectoryEntry(Which::Comparison, EstimatedTrajectoryLayer::kComparisonName),
       analysisEntry<KeyframesLayer>(),
       entry<AccumulatedSweepsLayer>(false),
       entry<LidarSweepLayer>(),
       analysisEntry<RoadPointsLayer>(),
       analysisEntry<MatchLayer>(),
+      {MatchLayer::kComparisonName, [] { return std::make_unique<MatchLayer>(true); }, false, true},
+      analysisEntry<MeasureLayer>(),
       entry<EgoPoseLayer>(),
   };
   return layers;

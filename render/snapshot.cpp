@@ -71,6 +71,14 @@ struct Snapshotter::State {
   std::optional<Renderer> renderer;
   std::optional<size_t> frameIndex;
   Frame frame;
+
+  void goTo(size_t index) {
+    context.makeCurrent();
+    if (frameIndex == index) return;
+    frame = makeFrame(scene, index);
+    renderer->setFrame(frame);
+    frameIndex = index;
+  }
 };
 
 Snapshotter::Snapshotter(const ArgoverseLog& log, const HdMap& map, const SnapshotOptions& options)
@@ -80,6 +88,7 @@ Snapshotter::Snapshotter(const ArgoverseLog& log, const HdMap& map, const Snapsh
   for (const auto& name : options.layers.empty() ? defaultLayers(options.view) : options.layers) {
     std::unique_ptr<Layer> layer = makeLayer(name);
     if (auto* points = dynamic_cast<RoadPointsLayer*>(layer.get())) points->showNonGround(options.view == View::Inspector);
+    if (const auto it = options.opacity.find(name); it != options.opacity.end()) layer->opacity = it->second;
     state_->renderer->addLayer(std::move(layer));
   }
   state_->renderer->setScene(state_->scene);
@@ -95,17 +104,19 @@ Snapshotter::~Snapshotter() {
   state_->renderer.reset();  // GL objects go while their context is alive
 }
 
+const Scene& Snapshotter::scene() const { return state_->scene; }
+
 Image Snapshotter::render(size_t index) {
   State& s = *state_;
-  s.context.makeCurrent();
-  if (s.frameIndex != index) {
-    s.frame = makeFrame(s.scene, index);
-    s.renderer->setFrame(s.frame);
-    s.frameIndex = index;
-  }
+  s.goTo(index);
   const double aspect = double(s.options.width) / s.options.height;
-  s.renderer->draw(viewCamera(s.options.view, s.scene, s.frame, aspect, &s.renderer->analysis()), s.options.width,
-                   s.options.height);
+  return render(index, viewCamera(s.options.view, s.scene, s.frame, aspect, &s.renderer->analysis()));
+}
+
+Image Snapshotter::render(size_t index, const Camera& camera) {
+  State& s = *state_;
+  s.goTo(index);
+  s.renderer->draw(camera, s.options.width, s.options.height);
   return s.context.readPixels();
 }
 

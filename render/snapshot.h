@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct SnapshotOptions {
   View view = View::Top;
   std::vector<std::string> layers;  // names in drawing order; empty = all
   bool overlay = true;               // colour bars, scale bar and marker legend over the view
+  std::map<std::string, float> opacity;  // per layer name; 1 where not given
 };
 
 // Parses "WIDTHxHEIGHT"; throws Error("option --size", ...) unless both are in 16..8192.
@@ -51,6 +53,9 @@ class Snapshotter {
   // What the analysis layers draw (and the landscape and inspector views frame).
   void setAnalysis(Analysis analysis);
   Image render(size_t frame);
+  // The frame from another camera than the view's (a saved session's).
+  Image render(size_t frame, const Camera& camera);
+  const Scene& scene() const;
 
  private:
   struct State;

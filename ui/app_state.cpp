@@ -4,6 +4,8 @@
 #include <utility>
 
 #include "engine/error.h"
+#include "engine/geom/se2.h"
+#include "engine/pipeline/point_labels.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
 #include "engine/pipeline/diagnostic_plots.h"
@@ -66,10 +68,13 @@ void AppState::goToFrame(long long index) {
 }
 
 void AppState::pollBench() {
-  if (!bench_ || !bench_->poll()) return;
-  renderer_->setAnalysis(bench_->analysis());
-  layerVisibility_.analysisArrived(renderer_->layers(), bench_->analysis());
-  if (const auto frame = std::exchange(bench_->frameToShow, std::nullopt)) goToFrame((long long)*frame);
+  if (!bench_) return;
+  if (bench_->poll()) {
+    renderer_->setAnalysis(bench_->analysis());
+    layerVisibility_.analysisArrived(renderer_->layers(), bench_->analysis());
+    if (const auto frame = std::exchange(bench_->frameToShow, std::nullopt)) goToFrame((long long)*frame);
+  }
+  if (pendingView_ && !bench_->runner().busy() && !bench_->comparison().busy()) finishRestore();
 }
 
 void AppState::inspectKeyframe(size_t k) {
@@ -114,6 +119,33 @@ void AppState::setPlotShown(const std::string& name, bool shown) {
 
 bool AppState::plotShown(const std::string& name) const {
   return std::find(shownPlots.begin(), shownPlots.end(), name) != shownPlots.end();
+}
+
+GroundMeasure AppState::measure(const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  const auto ground = [&](const Eigen::Vector2d& p) { return Eigen::Vector3d(p.x(), p.y(), scene_.groundZ(p, frame().groundZ)); };
+  const GroundMeasure m = measureGround(ground(from), ground(to), yawOf(frame().cityTEgo));
+  bench_->setMeasure(m);
+  pollBench();
+  return m;
+}
+
+std::optional<GroundMeasure> AppState::measureMatchError() {
+  const auto& inspection = bench_->inspection();
+  if (!inspection || !inspection->truth) return std::nullopt;
+  return measure(inspection->match.estimate.head<2>(), inspection->truth->head<2>());
+}
+
+Pick AppState::pick(const Eigen::Vector2d& at) {
+  const render::Frame& f = frame();
+  if (!f.sweep) return Pick{.at = at};
+  if (!pickLabels_ || pickLabels_->first != f.index)
+    pickLabels_ = std::pair(f.index, sweepPointLabels(*f.sweep, f.cityTEgo, bench_->config.roadPoints));
+  PickOptions options;
+  const HdMap* runMap = bench_->runner().map();
+  const render::Layer* cells = layer("ndt_cells");
+  if (runMap && cells && cells->visible && !bench_->config.match.cellSizes.empty())
+    options.ndtCellSize = *std::min_element(bench_->config.match.cellSizes.begin(), bench_->config.match.cellSizes.end());
+  return pickAt(at, *f.sweep, pickLabels_->second, f.cityTEgo, options.ndtCellSize ? *runMap : *loaded_.map, options);
 }
 
 render::Layer* AppState::layer(const std::string& name) {

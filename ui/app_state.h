@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 
 #include "engine/error.h"
+#include "engine/geom/ground_measure.h"
+#include "engine/pipeline/point_pick.h"
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "ui/event_navigation.h"
@@ -14,6 +16,7 @@
 #include "ui/playback.h"
 #include "ui/tuning_bench.h"
 #include "ui/view_camera.h"
+#include "ui/view_session.h"
 
 namespace hdprior {
 class ArgoverseLog;
@@ -79,6 +82,22 @@ class AppState {
   // Shows or hides a Diagnostics plot (a name of diagnosticPlots()); the shown keep the bench's order.
   void setPlotShown(const std::string& name, bool shown);
   bool plotShown(const std::string& name) const;
+  // Measures between two city points on the ground (z from the ground raster, or the ego's ground),
+  // along and across the ego heading at the current frame; the measure layer draws it.
+  GroundMeasure measure(const Eigen::Vector2d& from, const Eigen::Vector2d& to);
+  // The inspected keyframe's match: from its estimate to the truth. nullopt without both.
+  std::optional<GroundMeasure> measureMatchError();
+  // What lies at a city point in the current frame: the sweep point (labelled as the road points
+  // label it), the drivable-area polygon and, with ndt_cells shown, the NDT cell of the run's map.
+  Pick pick(const Eigen::Vector2d& at);
+  // The view as a session: log, frame, camera, layers, tab, plots, bookmarks, A's and B's configurations.
+  ViewSession session() const;
+  // Restores a session on the open log: layers, plots, bookmarks and tab at once; A's configuration,
+  // its run and B's when the session had them (in the background), then the inspected keyframe, the
+  // frame and the camera once they are done. Throws Error for a configuration that does not parse.
+  void restore(const ViewSession& session);
+  // True while a restored session waits for its runs.
+  bool restoring() const { return pendingView_.has_value(); }
   // The window as drawn, to this PNG after the next draw (the viewer takes it).
   void requestScreenshot(const std::filesystem::path& file) { screenshotRequest = file; }
 
@@ -89,10 +108,16 @@ class AppState {
   bool autoMatch = true;       // the tuning panel re-matches on every parameter change
   bool focusOnMatch = true;    // matching a keyframe turns the camera top-down onto it
   std::string selectTab;       // the bench tab to bring to the front on the next frame
+  std::string currentTab;      // the bench tab in front
   std::optional<std::filesystem::path> screenshotRequest;
   std::vector<std::string> shownPlots;   // the Diagnostics plots shown, in diagnosticPlots() order
   std::vector<Bookmark> bookmarks;
   std::optional<size_t> currentEvent;    // the event last gone to
+  bool measuring = false;                // M: the next two clicks on the ground measure
+  bool picking = false;                  // P: the tooltip names what is under the cursor
+  std::optional<GroundMeasure> lastMeasure;  // shown in the status bar
+  std::string lastPick;                      // the last pick clicked, shown in the status bar
+  std::optional<Eigen::Vector3d> measureStart;  // the first click of a measurement
 
  private:
   LoadedLog loaded_;
@@ -100,6 +125,9 @@ class AppState {
   std::unique_ptr<render::Renderer> renderer_;
   LayerVisibility layerVisibility_;
   std::unique_ptr<TuningBench> bench_;
+  std::optional<std::pair<size_t, std::vector<SubmapLabel>>> pickLabels_;  // the frame's sweep, labelled once
+  std::optional<ViewSession> pendingView_;  // a restored session's keyframe, frame and camera, after its runs
+  void finishRestore();
 };
 
 }  // namespace hdprior::ui

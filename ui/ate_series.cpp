@@ -20,6 +20,7 @@ std::vector<AteSeries> ateSeries(const render::Analysis& a) {
     series.push_back({kind, "odometry (" + source + ")", &a.odometryError});
   }
   if (!a.optimizedError.empty()) series.push_back({AteSeries::Kind::Optimized, "optimised", &a.optimizedError});
+  if (a.comparison) series.push_back({AteSeries::Kind::Comparison, "B: " + a.comparison->name, &a.comparison->optimizedError});
   return series;
 }
 

@@ -18,6 +18,9 @@ bool hasAnalysisData(const std::string& name, const render::Analysis& analysis) 
   if (name == "keyframes") return !analysis.keyframes.empty();
   if (name == "landscape") return analysis.landscape.has_value();
   if (name == "road_points" || name == "match") return analysis.inspection.has_value();
+  if (name == "comparison_trajectory") return analysis.comparison && !analysis.comparison->optimized.empty();
+  if (name == "comparison_match") return analysis.comparison && analysis.comparison->inspection;
+  if (name == "measure") return analysis.measure.has_value();
   return false;
 }
 

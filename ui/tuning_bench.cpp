@@ -76,14 +76,40 @@ std::string odometryFileReport(const TuningBench& bench) {
   return out + "\n";
 }
 
+// Run B against run A, when B has run.
+std::string comparisonReport(TuningBench& bench) {
+  const ComparisonRunner& b = bench.comparison();
+  if (!b.summary()) return b.error().empty() ? "" : "compare: B failed: " + b.error() + "\n";
+  char line[320];
+  std::snprintf(line, sizeof line, "compare: A ate_rmse %.6f B ate_rmse %.6f\ncompare: B %s: %s\n",
+                bench.summary() ? bench.summary()->ate.rmse : NAN, b.summary()->ate.rmse, b.name().c_str(),
+                b.summary()->constraintSummary.c_str());
+  return line;
+}
+
 }  // namespace
 
-std::string benchReport(TuningBench& bench) { return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench); }
+std::string benchReport(TuningBench& bench) {
+  return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench) + comparisonReport(bench);
+}
 
 std::string odometrySourceText(const Session& session) {
   const auto& given = session.givenOdometry();
   if (!given) return "built-in lidar odometry";
   return "file " + given->file + " (" + trajectoryFormatName(given->format) + ", frame " + givenOdometryFrameName(given->frame) + ")";
+}
+
+std::optional<size_t> keyframeNearFrame(const Session& session, size_t frame) {
+  const auto& keyframes = session.odometry().keyframes();
+  if (keyframes.empty()) return std::nullopt;
+  const auto distance = [&](size_t k) {
+    const size_t f = session.sweepOfFrame(keyframes[k].frame);
+    return f > frame ? f - frame : frame - f;
+  };
+  size_t best = 0;
+  for (size_t k = 1; k < keyframes.size(); ++k)
+    if (distance(k) < distance(best)) best = k;
+  return best;
 }
 
 double finiteRmse(const std::vector<double>& errors) {
@@ -97,7 +123,8 @@ double finiteRmse(const std::vector<double>& errors) {
   return n ? std::sqrt(sum / double(n)) : NAN;
 }
 
-TuningBench::TuningBench(const ArgoverseLog& log, const Config& config) : config(config), log_(log), runner_(log, config) {}
+TuningBench::TuningBench(const ArgoverseLog& log, const Config& config)
+    : config(config), log_(log), runner_(log, config), comparison_(log) {}
 
 bool TuningBench::openOdometryFile() {
   const bool opened = odometryFile.open(log_);
@@ -130,6 +157,7 @@ PipelineOptions TuningBench::pipelineOptions() const {
 
 bool TuningBench::poll() {
   pollLandscape();
+  if (comparison_.poll()) showComparison();
   if (runner_.poll()) {
     refresh();
     if (std::exchange(selectNewest_, false) && keyframeCount() > 0) selected_ = keyframeCount() - 1;
@@ -145,11 +173,20 @@ bool TuningBench::poll() {
 void TuningBench::refresh() {
   const Session* session = runner_.session();
   if (!session) return;
-  std::optional<KeyframeInspection> inspection = std::move(analysis_.inspection);
-  std::optional<CostLandscape> landscape = std::move(analysis_.landscape);
+  render::Analysis previous = std::move(analysis_);
   analysis_ = render::analysisOf(*session);
-  analysis_.inspection = std::move(inspection);
-  analysis_.landscape = std::move(landscape);
+  analysis_.inspection = std::move(previous.inspection);
+  analysis_.landscape = std::move(previous.landscape);
+  analysis_.comparison = std::move(previous.comparison);
+  analysis_.measure = previous.measure;
+  summary_.reset();
+  if (session->done()) {
+    try {
+      summary_ = summarizeRun(*session);
+    } catch (const Error& e) {
+      message = e.what();
+    }
+  }
   showOdometryFile();
 }
 
@@ -165,17 +202,21 @@ void TuningBench::requestLandscape(LandscapeRequest request) {
   landscapeJobGeneration_ = request.generation;
   landscapeJob_ = std::async(std::launch::async, [r = std::move(request)] {
     const auto t0 = std::chrono::steady_clock::now();
-    CostLandscape l = matchLandscape(*r.map, r.match, r.points, r.center, r.options);
-    return std::pair(std::move(l), std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    LandscapeResult out;
+    out.a = matchLandscape(*r.a.map, r.a.match, r.a.points, r.a.center, r.options);
+    out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (r.b) out.b = matchLandscape(*r.b->map, r.b->match, r.b->points, r.b->center, r.options);
+    return out;
   });
 }
 
 void TuningBench::pollLandscape() {
   if (!landscapeJob_.valid() || landscapeJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  auto [landscape, ms] = landscapeJob_.get();
+  LandscapeResult result = landscapeJob_.get();
   if (landscapeJobGeneration_ == landscapeGeneration_) {
-    analysis_.landscape = std::move(landscape);
-    landscapeMs = ms;
+    analysis_.landscape = std::move(result.a);
+    if (analysis_.comparison) analysis_.comparison->landscape = std::move(result.b);
+    landscapeMs = result.ms;
     changed_ = true;
   }
   if (pendingLandscape_) {
@@ -198,7 +239,12 @@ void TuningBench::run() {
   runner_.restart(config, pipelineOptions());
   runner_.run();
   selected_.reset();
+  render::Analysis previous = std::move(analysis_);
   analysis_ = {};
+  analysis_.comparison = std::move(previous.comparison);
+  if (analysis_.comparison) analysis_.comparison->inspection.reset(), analysis_.comparison->landscape.reset();
+  analysis_.measure = previous.measure;
+  summary_.reset();
   showOdometryFile();
   ++landscapeGeneration_;  // a landscape still being computed belongs to the old session
   changed_ = true;
@@ -221,23 +267,26 @@ size_t TuningBench::keyframeCount() {
 
 std::optional<size_t> TuningBench::keyframeAtFrame(size_t frame) {
   const Session* session = runner_.session();
-  if (!session || session->odometry().keyframes().empty()) return std::nullopt;
-  const auto& keyframes = session->odometry().keyframes();
-  size_t best = 0;
-  for (size_t k = 0; k < keyframes.size(); ++k) {
-    const auto distance = [&](size_t k) {
-      const size_t f = session->sweepOfFrame(keyframes[k].frame);
-      return f > frame ? f - frame : frame - f;
-    };
-    if (distance(k) < distance(best)) best = k;
-  }
-  return best;
+  return session ? keyframeNearFrame(*session, frame) : std::nullopt;
 }
 
 void TuningBench::selectKeyframe(size_t k) {
   selected_ = k;
   matchSelected();
 }
+
+namespace {
+
+// Where a keyframe's re-match starts: the run's prediction for it (the keyframe's pose without
+// priors), moved by the tuning panel's offset; nullopt without an offset (the session's own start).
+std::optional<Eigen::Vector3d> matchStart(const Session& session, size_t k, const Eigen::Vector3d& offset) {
+  if (offset == Eigen::Vector3d::Zero()) return std::nullopt;
+  const Eigen::Vector3d base = k < session.matches().size() ? planarPose(session.matches()[k].predicted)
+                                                             : planarPose(session.keyframePoses().at(k));
+  return offsetPose(base, offset);
+}
+
+}  // namespace
 
 void TuningBench::matchSelected() {
   Session* session = runner_.session();
@@ -246,22 +295,95 @@ void TuningBench::matchSelected() {
   const auto t0 = std::chrono::steady_clock::now();
   try {
     const size_t k = *selected_;
-    std::optional<Eigen::Vector3d> start;
-    if (startOffset != Eigen::Vector3d::Zero()) {
-      const Eigen::Vector3d base = k < session->matches().size() ? planarPose(session->matches()[k].predicted)
-                                                                  : planarPose(session->keyframePoses().at(k));
-      start = offsetPose(base, startOffset);
-    }
-    KeyframeInspection inspection = session->inspectKeyframe(k, config.roadPoints, config.match, start);
-    if (!landscapeEnabled || inspection.roadPoints.empty()) analysis_.landscape.reset();
-    else requestLandscape({map, inspection.roadPoints, inspection.match.estimate, config.match, landscapeOptions});
-    analysis_.inspection = std::move(inspection);
+    KeyframeInspection inspection = session->inspectKeyframe(k, config.roadPoints, config.match, matchStart(*session, k, startOffset));
     matchMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    history.add(config, startOffset, inspection);
+    std::optional<LandscapeInput> b = matchComparison(k);
+    if (!landscapeEnabled || inspection.roadPoints.empty()) analysis_.landscape.reset();
+    else requestLandscape({{map, inspection.roadPoints, inspection.match.estimate, config.match}, std::move(b), landscapeOptions});
+    analysis_.inspection = std::move(inspection);
     message.clear();
   } catch (const Error& e) {
     message = e.what();
   }
   changed_ = true;
+}
+
+// Run B's match of the keyframe nearest A's keyframe k, from the same offset; what its landscape needs.
+std::optional<TuningBench::LandscapeInput> TuningBench::matchComparison(size_t keyframeA) {
+  if (!analysis_.comparison) return std::nullopt;
+  render::Comparison& b = *analysis_.comparison;
+  b.inspection.reset();
+  b.landscape.reset();
+  Session* session = comparison_.session();
+  const HdMap* map = comparison_.map();
+  const Session* a = runner_.session();
+  if (!session || !map || !a || !session->hasPriors()) return std::nullopt;
+  const std::optional<size_t> k = keyframeNearFrame(*session, a->sweepOfFrame(a->odometry().keyframes().at(keyframeA).frame));
+  if (!k) return std::nullopt;
+  const Config& c = comparison_.config();
+  try {
+    b.inspection = session->inspectKeyframe(*k, c.roadPoints, c.match, matchStart(*session, *k, startOffset));
+  } catch (const Error& e) {
+    message = std::string("B: ") + e.what();
+    return std::nullopt;
+  }
+  if (!landscapeEnabled || b.inspection->roadPoints.empty()) return std::nullopt;
+  return LandscapeInput{map, b.inspection->roadPoints, b.inspection->match.estimate, c.match};
+}
+
+void TuningBench::compare(const Config& b, std::string name, std::optional<std::filesystem::path> file) {
+  if (comparison_.busy()) return;
+  analysis_.comparison.reset();
+  comparison_.start(b, pipelineOptions(), std::move(name), std::move(file));
+  changed_ = true;
+}
+
+bool TuningBench::compareFile(const std::filesystem::path& file) {
+  try {
+    compare(hdprior::loadConfig(file), file.filename().string(), file);
+    message.clear();
+    return true;
+  } catch (const Error& e) {
+    message = e.what();
+    return false;
+  }
+}
+
+void TuningBench::restoreHistory(size_t row) {
+  if (row >= history.rows().size()) return;
+  const MatchHistoryRow r = history.rows()[row];
+  config = r.config;
+  startOffset = r.startOffset;
+  selectKeyframe(r.keyframe);
+}
+
+void TuningBench::showAnalysis(render::Analysis analysis) {
+  analysis_ = std::move(analysis);
+  changed_ = true;
+}
+
+void TuningBench::setMeasure(std::optional<GroundMeasure> measure) {
+  analysis_.measure = measure;
+  changed_ = true;
+}
+
+void TuningBench::clearComparison() {
+  if (comparison_.busy()) return;
+  comparison_.clear();
+  analysis_.comparison.reset();
+  changed_ = true;
+}
+
+void TuningBench::showComparison() {
+  changed_ = true;
+  Session* session = comparison_.session();
+  if (!comparison_.error().empty() || !session) {
+    message = comparison_.error();
+    return;
+  }
+  analysis_.comparison = render::comparisonOf(*session, comparison_.name());
+  if (selected_ && runner_.session()) matchSelected();
 }
 
 void TuningBench::saveConfig() {

@@ -11,6 +11,8 @@
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/keyframe_inspection.h"
 #include "render/analysis.h"
+#include "ui/comparison_runner.h"
+#include "ui/match_history.h"
 #include "ui/odometry_file.h"
 #include "ui/session_runner.h"
 
@@ -52,11 +54,17 @@ class TuningBench {
   // run started its match from, offset by `startOffset` (dx forward, dy left, dyaw; its frame).
   void selectKeyframe(size_t k);
   void matchSelected();
+  // Every re-match with its parameters; restoring a row takes its parameters and re-matches its keyframe.
+  MatchHistory history;
+  void restoreHistory(size_t row);
   Eigen::Vector3d startOffset = Eigen::Vector3d::Zero();
 
   std::optional<size_t> selected() const { return selected_; }
   const std::optional<KeyframeInspection>& inspection() const { return analysis_.inspection; }
   const render::Analysis& analysis() const { return analysis_; }
+  // Shows an analysis computed elsewhere (a run read back, a benchmark's synthetic one) until the
+  // next job ends.
+  void showAnalysis(render::Analysis analysis);
   // The keyframe nearest in time to a frame, when the session has keyframes.
   std::optional<size_t> keyframeAtFrame(size_t frame);
   size_t keyframeCount();
@@ -71,28 +79,53 @@ class TuningBench {
   void saveConfig();
   void loadConfig();
 
+  // The A/B comparison: run B over the same log with `b` (the bench's parameters or a file's), in
+  // the background; its trajectory, diagnostics and its match of the selected keyframe join the
+  // analysis when it ends. compareFile: false when the file is not a valid configuration (message says why).
+  void compare(const Config& b, std::string name, std::optional<std::filesystem::path> file = std::nullopt);
+  bool compareFile(const std::filesystem::path& file);
+  void clearComparison();
+  ComparisonRunner& comparison() { return comparison_; }
+  // The user's measurement (none: cleared), drawn by the measure layer.
+  void setMeasure(std::optional<GroundMeasure> measure);
+  // Run A's figures for the comparison table, once its run has ended.
+  const std::optional<RunSummary>& summary() const { return summary_; }
+
  private:
-  struct LandscapeRequest {
+  struct LandscapeInput {
     const HdMap* map = nullptr;
     std::vector<Eigen::Vector2d> points;
     Eigen::Vector3d center;
     MatchOptions match;
+  };
+  struct LandscapeRequest {
+    LandscapeInput a;
+    std::optional<LandscapeInput> b;  // run B's match of the same keyframe
     CostLandscapeOptions options;
     size_t generation = 0;
   };
+  struct LandscapeResult {
+    CostLandscape a;
+    std::optional<CostLandscape> b;
+    double ms = 0.0;  // A's
+  };
   void refresh();
+  void showComparison();
+  std::optional<LandscapeInput> matchComparison(size_t keyframeA);
   void showOdometryFile();
   void requestLandscape(LandscapeRequest request);
   void pollLandscape();
 
   const ArgoverseLog& log_;
   SessionRunner runner_;
+  ComparisonRunner comparison_;
+  std::optional<RunSummary> summary_;
   std::optional<size_t> selected_;
   render::Analysis analysis_;
   bool changed_ = false;
   bool selectNewest_ = false;
   // Declared after runner_: destroyed (waited for) before the map it reads.
-  std::future<std::pair<CostLandscape, double>> landscapeJob_;
+  std::future<LandscapeResult> landscapeJob_;
   std::optional<LandscapeRequest> pendingLandscape_;
   size_t landscapeGeneration_ = 0, landscapeJobGeneration_ = 0;
 };
@@ -103,6 +136,9 @@ std::string benchReport(TuningBench& bench);
 
 // Where the session's odometry comes from: "built-in lidar odometry" or "file F (tum, frame first)".
 std::string odometrySourceText(const Session& session);
+
+// The keyframe of a session nearest in time to a log frame; nullopt without keyframes.
+std::optional<size_t> keyframeNearFrame(const Session& session, size_t frame);
 
 // The RMSE of the finite values (per-pose errors are NaN where there is no ground truth); NaN if none.
 double finiteRmse(const std::vector<double>& errors);

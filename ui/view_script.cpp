@@ -53,7 +53,8 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
       {"opacity", {2, 2}}, {"wait", {1, 1}}, {"screenshot", {1, 1}}, {"exit", {0, 0}}, {"run", {0, 0}},
       {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"offset", {3, 3}},
       {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}, {"plot", {2, 2}},
-      {"events", {0, 0}}, {"next-event", {0, 0}}, {"prev-event", {0, 0}}, {"bookmark", {1, 64}}};
+      {"events", {0, 0}}, {"next-event", {0, 0}}, {"prev-event", {0, 0}}, {"bookmark", {1, 64}}, {"compare", {1, 1}},
+      {"measure", {1, 4}}, {"pick", {2, 2}}, {"save-session", {1, 1}}, {"load-session", {1, 1}}};
   const auto it = arity.find(verb);
   if (it == arity.end()) return "unknown command '" + verb + "'";
   const auto [least, most] = it->second;
@@ -72,13 +73,16 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
   if (verb == "keyframe" && (!isInteger(a[0]) || a[0][0] == '-')) return "'keyframe' needs a non-negative integer";
   if (verb == "offset" && !std::all_of(a.begin(), a.end(), isNumber)) return "'offset' needs three numbers";
   if (verb == "tab" && std::find(kBenchTabs.begin(), kBenchTabs.end(), a[0]) == kBenchTabs.end())
-    return "'tab' needs Pipeline, NDT, PGO, Keyframe, Events or Export";
+    return "'tab' needs Pipeline, NDT, PGO, Keyframe, Events, Compare or Export";
   if (verb == "plot" && !findDiagnosticPlot(a[0])) return "unknown plot '" + a[0] + "' (" + diagnosticPlotNames() + ")";
   if (verb == "plot" && a[1] != "on" && a[1] != "off") return "'plot' needs on or off";
   if (verb == "odometry" && a.size() > 1 && a[1] != "auto" && a[1] != "tum" && a[1] != "kitti")
     return "'odometry' needs the format auto, tum or kitti";
   if (verb == "odometry" && a.size() > 2 && a[2] != "first" && a[2] != "city") return "'odometry' needs the frame first or city";
   if (verb == "use-odometry" && a[0] != "file" && a[0] != "builtin") return "'use-odometry' needs file or builtin";
+  if (verb == "measure" && !(a.size() == 4 && std::all_of(a.begin(), a.end(), isNumber)) && !(a.size() == 1 && a[0] == "match"))
+    return "'measure' needs four numbers (X1 Y1 X2 Y2, city metres) or 'match'";
+  if (verb == "pick" && !std::all_of(a.begin(), a.end(), isNumber)) return "'pick' needs two numbers (X Y, city metres)";
   return "";
 }
 

@@ -24,7 +24,7 @@ namespace hdprior::ui {
 //   match                       the same for the keyframe nearest the current frame
 //   offset DX DY DYAW_DEG       the tuning panel's start offset (forward, left, yaw); re-matches
 //   optimize                    "optimise now" with the tuned prior and graph options
-//   tab Pipeline|NDT|PGO|Keyframe|Events|Export   bring a bench tab to the front
+//   tab Pipeline|NDT|PGO|Keyframe|Events|Compare|Export   bring a bench tab to the front
 //   report                      print what the bench shows (odometry, match, solve, ATE) to stdout
 //   odometry FILE [auto|tum|kitti] [first|city]   open a trajectory file as the odometry (the
 //                               Pipeline tab's Open; a bad file stops the script with its error)
@@ -36,7 +36,14 @@ namespace hdprior::ui {
 //   events                      print the run's events: `event I keyframe K frame F KIND DETAIL`
 //   next-event / prev-event     go to the next / previous event (N / Shift+N); prints `frame F`
 //   bookmark NOTE...            a bookmark at the current frame (B)
-inline constexpr std::array<const char*, 6> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Events", "Export"};
+//   compare FILE                run B with this configuration over the log (the Compare tab); waits for it;
+//                               `report` then adds `compare: A ate_rmse X B ate_rmse Y`
+//   measure X1 Y1 X2 Y2         measure between two ground points (city metres): prints
+//                               `measure: distance D along A lateral L` (the ego heading's frame)
+//   measure match               the same from the inspected match's estimate to the truth
+//   pick X Y                    what lies at a city point: prints `pick: ...`
+//   save-session FILE / load-session FILE   the view as a session file (load waits for its runs)
+inline constexpr std::array<const char*, 7> kBenchTabs = {"Pipeline", "NDT", "PGO", "Keyframe", "Events", "Compare", "Export"};
 
 struct ScriptCommand {
   std::string verb;

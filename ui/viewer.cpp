@@ -27,6 +27,7 @@
 #include "ui/panels/plots_panel.h"
 #include "ui/panels/status_bar.h"
 #include "ui/panels/timeline_panel.h"
+#include "ui/panels/view_tools.h"
 
 namespace hdprior::ui {
 namespace {
@@ -85,6 +86,7 @@ void Viewer::finishLoading() {
     // view --odometry belongs to the log given with it, not to one opened later from the panel.
     if (loadingFromOptions_ && options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
       throw *state_->bench().odometryFile.failure();
+    if (loadingFromOptions_ && options_.session) restoreSession(readViewSession(*options_.session), options_.scripted);
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;
     loadError_ = e.what();
@@ -98,7 +100,7 @@ void Viewer::waitForLog() {
 
 // Runs script commands until one needs a drawn frame (wait, screenshot) or the script ends.
 void Viewer::runScript() {
-  if (!options_.scripted || !state_->hasLog()) return;
+  if (!options_.scripted || !state_->hasLog() || state_->restoring()) return;
   if (state_->error) throw *state_->error;  // a script stops at a frame that cannot be loaded
   if (waitFrames_ > 0) {
     --waitFrames_;
@@ -199,10 +201,55 @@ bool Viewer::runBenchCommand(const ScriptCommand& c) {
     for (const std::string& word : c.args) note += (note.empty() ? "" : " ") + word;
     state_->addBookmark(note);
     std::printf("bookmark %zu frame %zu %s\n", state_->bookmarks.size() - 1, state_->frame().index, note.c_str());
+  } else if (!runDebugCommand(c)) {
+    return false;
+  }
+  return true;
+}
+
+// The debugging bench's comparison, measure, pick and session commands. False for other verbs.
+bool Viewer::runDebugCommand(const ScriptCommand& c) {
+  TuningBench& bench = state_->bench();
+  const auto fail = [&](const std::string& why) { throw Error("script line " + std::to_string(c.line), why); };
+  const auto number = [&](size_t i) { return std::stod(c.args[i]); };
+  if (c.verb == "compare") {
+    if (!bench.compareFile(c.args[0])) fail(bench.message);
+    bench.comparison().wait();
+    state_->pollBench();
+    bench.waitForLandscape();
+    state_->pollBench();
+    if (!bench.comparison().error().empty()) fail("B: " + bench.comparison().error());
+  } else if (c.verb == "measure") {
+    std::optional<GroundMeasure> m;
+    if (c.args[0] == "match") m = state_->measureMatchError();
+    else m = state_->measure({number(0), number(1)}, {number(2), number(3)});
+    if (!m) fail("'measure match' needs an inspected keyframe with ground truth");
+    std::printf("measure: distance %.4f along %.4f lateral %.4f rise %.4f\n", m->distance, m->along, m->lateral, m->rise);
+  } else if (c.verb == "pick") {
+    std::printf("%s\n", pickText(state_->pick({number(0), number(1)})).c_str());
+  } else if (c.verb == "save-session") {
+    writeViewSession(c.args[0], state_->session());
+    std::printf("wrote %s\n", c.args[0].c_str());
+  } else if (c.verb == "load-session") {
+    restoreSession(readViewSession(c.args[0]), true);
   } else {
     return false;
   }
   return true;
+}
+
+// A script waits for the session's runs, keyframe and landscapes before its next command.
+void Viewer::restoreSession(const ViewSession& session, bool wait) {
+  state_->restore(session);
+  if (!wait) return;
+  TuningBench& bench = state_->bench();
+  while (state_->restoring()) {
+    bench.runner().wait();
+    bench.comparison().wait();
+    state_->pollBench();
+  }
+  bench.waitForLandscape();
+  state_->pollBench();
 }
 
 void Viewer::updateCursor() {
@@ -232,6 +279,7 @@ void Viewer::drawPanels() {
   drawPlotsPanel(*state_);
   drawTimelinePanel(*state_);
   drawStatusBar(*state_);
+  drawViewTools(*state_);
 }
 
 void Viewer::takeScreenshot(const std::filesystem::path& file) {
@@ -253,6 +301,7 @@ void Viewer::frame() {
   if (state_->hasLog()) {
     state_->pollBench();
     handleViewInput(*state_, float(h));
+    handleViewTools(*state_);
     state_->goToFrame((long long)state_->playback.advance(state_->frame().index, state_->log().sweepTimestamps(), dt));
     updateCursor();
   }

@@ -30,6 +30,7 @@ struct ViewerOptions {
   Config config = defaultConfig();                  // the tuning bench starts from it ...
   std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
   std::optional<GivenOdometry> odometry;            // view --odometry FILE: opened in the Pipeline tab
+  std::optional<std::filesystem::path> session;     // view --session FILE: restored once the log is open
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
   bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)
@@ -56,6 +57,8 @@ class Viewer {
   void finishLoading();
   void runScript();
   bool runBenchCommand(const ScriptCommand& command);
+  bool runDebugCommand(const ScriptCommand& command);
+  void restoreSession(const ViewSession& session, bool wait);
   void updateCursor();
   void drawPanels();
   void takeScreenshot(const std::filesystem::path& file);

@@ -8,6 +8,7 @@
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
 #include "engine/pipeline/global_map.h"
+#include "engine/pipeline/point_labels.h"
 
 namespace hdprior {
 namespace {
@@ -21,16 +22,6 @@ void checkLog(const ArgoverseLog& log) {
   if (!log.cityTEgo().covers(log.sweepTimestamps().front())) {
     throw Error(log.dir().string(), "the ground-truth poses do not cover the first sweep (needed to anchor the start)");
   }
-}
-
-std::vector<SubmapLabel> pointLabels(const LabelledSubmap& submap) {
-  std::vector<SubmapLabel> labels(submap.points.size(), SubmapLabel::Other);
-  for (size_t i = 0; i < labels.size(); ++i) {
-    if (submap.road[i] == kCurbPoint) labels[i] = SubmapLabel::Curb;
-    else if (submap.road[i] == kRoadPoint) labels[i] = SubmapLabel::Road;
-    else if (submap.ground[i]) labels[i] = SubmapLabel::Ground;
-  }
-  return labels;
 }
 
 }  // namespace

@@ -23,7 +23,8 @@ const Kind& kind(EstimatedTrajectoryLayer::Which which) {
   using L = EstimatedTrajectoryLayer;
   static const Kind kinds[] = {{L::kOdometryName, "odometry ATE", {1.0f, 0.45f, 0.15f, 1.0f}},
                                {L::kOptimizedName, "optimised ATE", {0.25f, 0.55f, 1.0f, 1.0f}},
-                               {L::kFileName, "file ATE", {0.9f, 0.3f, 0.9f, 1.0f}}};
+                               {L::kFileName, "file ATE", {0.9f, 0.3f, 0.9f, 1.0f}},
+                               {L::kComparisonName, "B ATE", {0.3f, 1.0f, 0.75f, 1.0f}}};
   return kinds[int(which)];
 }
 
@@ -34,13 +35,25 @@ EstimatedTrajectoryLayer::EstimatedTrajectoryLayer(Which which) : which_(which),
 std::string EstimatedTrajectoryLayer::name() const { return kind(which_).name; }
 
 const PoseTrajectory& EstimatedTrajectoryLayer::trajectory() const {
-  return which_ == Which::Odometry ? analysis_->odometry : which_ == Which::Optimized ? analysis_->optimized : analysis_->file;
+  static const PoseTrajectory none;
+  switch (which_) {
+    case Which::Odometry: return analysis_->odometry;
+    case Which::Optimized: return analysis_->optimized;
+    case Which::File: return analysis_->file;
+    case Which::Comparison: break;
+  }
+  return analysis_->comparison ? analysis_->comparison->optimized : none;
 }
 
 const std::vector<double>& EstimatedTrajectoryLayer::errors() const {
-  return which_ == Which::Odometry    ? analysis_->odometryError
-         : which_ == Which::Optimized ? analysis_->optimizedError
-                                      : analysis_->fileError;
+  static const std::vector<double> none;
+  switch (which_) {
+    case Which::Odometry: return analysis_->odometryError;
+    case Which::Optimized: return analysis_->optimizedError;
+    case Which::File: return analysis_->fileError;
+    case Which::Comparison: break;
+  }
+  return analysis_->comparison ? analysis_->comparison->optimizedError : none;
 }
 
 void EstimatedTrajectoryLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {

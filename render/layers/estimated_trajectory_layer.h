@@ -8,15 +8,16 @@
 
 namespace hdprior::render {
 
-// The odometry's, the optimised or an opened trajectory file's trajectory of the analysis (the
+// The odometry's, the optimised, an opened trajectory file's or run B's trajectory of the analysis (the
 // ground truth is TrajectoryLayer) as a line strip with pose dots, in its own colour or coloured by its per-pose ATE (Turbo from
 // 0 to the largest error, or to a fixed maximum).
 class EstimatedTrajectoryLayer : public Layer {
  public:
-  enum class Which { Odometry, Optimized, File };
+  enum class Which { Odometry, Optimized, File, Comparison };
   static constexpr const char* kOdometryName = "odometry_trajectory";
   static constexpr const char* kOptimizedName = "optimized_trajectory";
   static constexpr const char* kFileName = "file_trajectory";
+  static constexpr const char* kComparisonName = "comparison_trajectory";  // run B of an A/B comparison
   explicit EstimatedTrajectoryLayer(Which which);
   std::string name() const override;
   void setFrame(const Scene& scene, const Frame& frame) override { build(scene); }

@@ -31,6 +31,21 @@ Eigen::Matrix2f clampedAxes(const MatchResult& m, double maxHalfAxis) {
 
 }  // namespace
 
+MatchLayer::MatchLayer(bool comparison) : comparison_(comparison) {
+  if (!comparison) return;
+  start_ = {0.45f, 0.75f, 0.6f, 1.0f};
+  path_ = {0.65f, 0.9f, 0.8f, 1.0f};
+  estimate_ = {0.3f, 1.0f, 0.75f, 1.0f};  // run B's colour, as its trajectory
+  ellipse_ = {0.2f, 0.8f, 0.6f, 1.0f};
+}
+
+const KeyframeInspection* MatchLayer::inspection() const {
+  if (!analysis_) return nullptr;
+  if (!comparison_) return analysis_->inspection ? &*analysis_->inspection : nullptr;
+  const auto& b = analysis_->comparison;
+  return b && b->inspection ? &*b->inspection : nullptr;
+}
+
 void MatchLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
   analysis_ = &analysis;
   build(scene);
@@ -44,8 +59,8 @@ void MatchLayer::build(const Scene& scene) {
   }
   Strokes strokes;
   std::vector<ColoredVertex> dots;
-  if (analysis_ && analysis_->inspection) {
-    const KeyframeInspection& k = *analysis_->inspection;
+  if (const KeyframeInspection* inspected = inspection()) {
+    const KeyframeInspection& k = *inspected;
     const double z = k.keyframePose.translation().z() + 0.05;
     const auto at = [&](const Eigen::Vector3d& pose) { return scene.local({pose.x(), pose.y(), z}); };
     const auto marker = [&](const Eigen::Vector3d& pose, const Eigen::Vector4f& color) {
@@ -62,7 +77,7 @@ void MatchLayer::build(const Scene& scene) {
     }
     strokes.polyline(path, width_, path_);
     marker(k.start, start_);
-    if (k.truth) marker(*k.truth, truth_);
+    if (k.truth && !comparison_) marker(*k.truth, truth_);
     marker(k.match.estimate, estimate_);
   }
   quads_->upload(std::span<const ColoredVertex>(strokes.quads));
@@ -78,9 +93,11 @@ void MatchLayer::draw(const DrawContext& context) const {
 }
 
 std::vector<MarkerKey> MatchLayer::markerKeys() const {
-  if (!analysis_ || !analysis_->inspection) return {};
+  const KeyframeInspection* k = inspection();
+  if (!k) return {};
+  if (comparison_) return {{"B start", start_}, {"B estimate", estimate_}};
   std::vector<MarkerKey> keys = {{"start", start_}, {"estimate", estimate_}};
-  if (analysis_->inspection->truth) keys.push_back({"truth", truth_});
+  if (k->truth) keys.push_back({"truth", truth_});
   return keys;
 }
 

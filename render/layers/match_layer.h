@@ -4,16 +4,23 @@
 #include "render/gpu_mesh.h"
 #include "render/layer.h"
 
+namespace hdprior {
+struct KeyframeInspection;
+}
+
 namespace hdprior::render {
 
 // The inspected keyframe's match: its start, the iteration path (a dot per iterate), the
 // result and the ground truth as pose markers with a heading tick, and the 2-sigma ellipse of
 // the covariance's x-y block at the result. A direction the match does not observe (along a
-// straight road) is drawn at the length limit.
+// straight road) is drawn at the length limit. The comparison's instance draws run B's match of the
+// same keyframe in its own colours (no truth: A's shows it).
 class MatchLayer : public Layer {
  public:
   static constexpr const char* kName = "match";
-  std::string name() const override { return kName; }
+  static constexpr const char* kComparisonName = "comparison_match";
+  explicit MatchLayer(bool comparison = false);
+  std::string name() const override { return comparison_ ? kComparisonName : kName; }
   void setFrame(const Scene& scene, const Frame& frame) override { build(scene); }
   void setAnalysis(const Scene& scene, const Analysis& analysis) override;
   void draw(const DrawContext& context) const override;
@@ -22,7 +29,9 @@ class MatchLayer : public Layer {
 
  private:
   void build(const Scene& scene);
+  const KeyframeInspection* inspection() const;
 
+  bool comparison_ = false;
   const Analysis* analysis_ = nullptr;
   std::unique_ptr<GpuMesh> quads_, lines_, dots_;
   float width_ = 0.05f;       // metres

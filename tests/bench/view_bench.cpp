@@ -10,6 +10,7 @@
 // and shows frame 3 with 3 accumulated sweeps before and after it.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -17,8 +18,12 @@
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/lidar_sweep.h"
+#include "engine/pipeline/config.h"
+#include "engine/pipeline/pipeline_run.h"
+#include "engine/pipeline/session.h"
 #include "render/layers/accumulated_sweeps_layer.h"
 #include "ui/app_state.h"
+#include "ui/match_history.h"
 #include "ui/viewer.h"
 
 namespace hdprior {
@@ -119,6 +124,60 @@ BENCHMARK(BM_ViewFullRedraw1280x720Orbit)->Unit(benchmark::kMillisecond)->UseRea
 BENCHMARK(BM_ViewFullRedraw1280x720Top)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(6);
 BENCHMARK(BM_ViewCameraMoving1280x720Orbit)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_ViewFrameChange)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(6);
+
+}  // namespace
+}  // namespace hdprior
+
+namespace hdprior {
+namespace {
+
+// The draw loop with four Diagnostics plots (score, sigma lateral, chi2 with its gate, lateral
+// error) over a 600-keyframe run: synthetic diagnostics of 600 keyframes spread over the bench
+// log's frames, every value finite, statuses cycling.
+void BM_ViewDrawLoopFourPlots600Keyframes(benchmark::State& state) {
+  const std::unique_ptr<ui::Viewer> viewer = openViewer(state, benchOptions());
+  if (!viewer) return;
+  ui::AppState& app = viewer->state();
+  render::Analysis analysis;
+  for (size_t k = 0; k < 600; ++k) {
+    KeyframeDiagnostic d;
+    d.keyframe = k;
+    d.frame = k * app.frameCount() / 600;
+    d.constraint.kind = k % 10 == 9 ? PriorConstraint::Kind::Rejected : PriorConstraint::Kind::Fixes;
+    d.constraint.lateral = d.constraint.yaw = true;
+    d.constraint.along = k % 3 == 0;
+    for (size_t f = 0; f < kDiagnosticFields; ++f) d.values[f] = std::sin(0.05 * double(k) + double(f));
+    analysis.diagnostics.push_back(d);
+  }
+  app.bench().showAnalysis(std::move(analysis));
+  for (const char* plot : {"score", "sigma_lateral", "chi2", "error_lateral"}) app.setPlotShown(plot, true);
+  for (int i = 0; i < 5; ++i) viewer->frame();
+  for (auto _ : state) viewer->frame();
+  state.counters["FPS"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ViewDrawLoopFourPlots600Keyframes)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The NDT tab's re-match of a keyframe, history row included: the keyframe's road points from its
+// sub-map (the real sweep: 4,085 road points after thinning), the match, and the row with what
+// changed since the last one (an outlier ratio toggled between two values, as a slider would).
+// Needs no display.
+void BM_RematchWithHistoryRow(benchmark::State& state) {
+  const ArgoverseLog log(kLog);
+  Config config = defaultConfig();
+  const std::unique_ptr<HdMap> map = loadPriorMap(log, config);
+  Session session(log, map.get(), config);
+  session.run();
+  ui::MatchHistory history;
+  size_t roadPoints = 0;
+  for (auto _ : state) {
+    config.match.outlierRatio = history.rows().size() % 2 ? 0.5 : 0.55;
+    const KeyframeInspection k = session.inspectKeyframe(0, config.roadPoints, config.match, std::nullopt);
+    history.add(config, Eigen::Vector3d::Zero(), k);
+    roadPoints = k.roadPoints.size();
+  }
+  state.counters["road_points"] = double(roadPoints);
+}
+BENCHMARK(BM_RematchWithHistoryRow)->Unit(benchmark::kMillisecond)->Iterations(40);
 
 }  // namespace
 }  // namespace hdprior

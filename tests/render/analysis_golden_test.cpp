@@ -48,7 +48,7 @@ struct AnalysedLog {
 
   render::Image snapshot(render::View view, const std::string& layers, bool overlay = true) const {
     render::SnapshotOptions options{640, 360, view, layers.empty() ? std::vector<std::string>{} : render::parseLayerList(layers),
-                                    overlay};
+                                    overlay, {}};
     render::Snapshotter snapshotter(*log, *map, options);
     snapshotter.setAnalysis(analysis);
     return snapshotter.render(analysis.inspection->frame);

@@ -81,13 +81,19 @@ std::unique_ptr<HdMap> AnalysisLayers::map_;
 
 bool colourNear(const uint8_t* p, int r, int g, int b) { return std::abs(p[0] - r) < 12 && std::abs(p[1] - g) < 12 && std::abs(p[2] - b) < 12; }
 
-TEST_F(AnalysisLayers, KeyframesAreColouredByMatchStatus) {
+// Coloured by what the prior fixes (render/constraint_palette.h): full, partial, gated, rejected, none.
+TEST_F(AnalysisLayers, KeyframesAreColouredByWhatTheirPriorFixes) {
+  using Kind = PriorConstraint::Kind;
+  const PriorConstraint full{Kind::Fixes, true, true, true, ""}, lateralYaw{Kind::Fixes, false, true, true, ""},
+      gated{Kind::Gated, false, true, true, "chi2 14.2 > 11.3"}, rejected{Kind::Rejected, false, false, false, "too few points"};
   render::Analysis a;
-  a.keyframes = {{0, 0, offsetFromFrame0(-15, 0), MatchStatus::Accepted}, {1, 1, offsetFromFrame0(-5, 0), MatchStatus::Degenerate},
-                 {2, 2, offsetFromFrame0(5, 0), MatchStatus::Rejected}, {3, 3, offsetFromFrame0(15, 0), std::nullopt}};
+  a.keyframes = {{0, 0, offsetFromFrame0(-20, 0), full},    {1, 1, offsetFromFrame0(-10, 0), lateralYaw},
+                 {2, 2, offsetFromFrame0(0, 0), gated},     {3, 3, offsetFromFrame0(10, 0), rejected},
+                 {4, 4, offsetFromFrame0(20, 0), std::nullopt}};
   const render::Image image = draw("keyframes", a);
-  EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 51, 217, 77); }), 10u);    // accepted green
-  EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 255, 179, 26); }), 10u);   // degenerate amber
+  EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 51, 217, 77); }), 10u);    // full green
+  EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 77, 166, 255); }), 10u);   // partial sky blue
+  EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 255, 217, 38); }), 10u);   // gated yellow
   EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 242, 51, 51); }), 10u);    // rejected red
   EXPECT_GT(count(image, [](const uint8_t* p) { return colourNear(p, 153, 153, 153); }), 10u);  // no prior grey
   a.keyframes.resize(1);

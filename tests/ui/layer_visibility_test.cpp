@@ -42,6 +42,9 @@ render::Analysis fullAnalysis() {
   analysis.keyframes.push_back({});
   analysis.inspection.emplace();
   analysis.landscape.emplace();
+  analysis.comparison = render::Comparison{.name = "b", .optimized = onePose()};
+  analysis.comparison->inspection.emplace();
+  analysis.measure.emplace();
   return analysis;
 }
 

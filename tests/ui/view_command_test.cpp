@@ -16,43 +16,12 @@
 
 #include "engine/sim/demo_log.h"
 #include "render/image_compare.h"
+#include "display_run.h"
 #include "test_data.h"
 
 namespace hdprior::test {
 namespace {
 namespace fs = std::filesystem;
-
-std::string quoted(const fs::path& p) {
-  std::string s = "'";
-  s += p.string();
-  s += "'";
-  return s;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run), as CI does. The X authority file is
-// the test's own (-f): xvfb-run then has no temporary folder to remove, whose removal sometimes fails
-// under load and turns the command's exit status into 5.
-CommandResult runWithDisplay(const std::string& args, const fs::path& dir, const std::string& env = "") {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = env + " xvfb-run -a -f " + quoted(dir / "Xauthority") + " -s '-screen 0 1280x800x24' '" +
-                          std::string(HDPRIOR_BINARY) + "' " + args +
-                          " >" + quoted(out) + " 2>" + quoted(err);
-  const int raw = std::system(cmd.c_str());
-  CommandResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 struct Content {
   size_t distinctColors = 0;

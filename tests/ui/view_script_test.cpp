@@ -38,6 +38,18 @@ TEST(ViewScript, ParsesTheOdometryFileCommands) {
   EXPECT_EQ(commands[3].args, std::vector<std::string>{"builtin"});
 }
 
+TEST(ViewScript, ParsesTheDebuggingBenchCommands) {
+  const auto commands = ui::parseViewScript(
+      "plot chi2 on\nevents\nnext-event\nprev-event\nbookmark kerb looks off\ncompare b.json\nmeasure 1 2 3.5 -4\n"
+      "measure match\npick 10 -2.5\nsave-session s.json\nload-session s.json\ntab Compare\n",
+      "s.txt");
+  ASSERT_EQ(commands.size(), 12u);
+  EXPECT_EQ(commands[4].args, (std::vector<std::string>{"kerb", "looks", "off"}));
+  EXPECT_EQ(commands[6].args, (std::vector<std::string>{"1", "2", "3.5", "-4"}));
+  EXPECT_EQ(commands[7].args, std::vector<std::string>{"match"});
+  EXPECT_EQ(commands[8].args, (std::vector<std::string>{"10", "-2.5"}));
+}
+
 TEST(ViewScript, RejectsBadLinesNamingTheLine) {
   const std::pair<const char*, const char*> bad[] = {
       {"frame 0\nfly away\n", "line 2: unknown command 'fly'"},
@@ -53,7 +65,17 @@ TEST(ViewScript, RejectsBadLinesNamingTheLine) {
       {"keyframe -2\n", "non-negative integer"},
       {"offset 1 x 2\n", "three numbers"},
       {"offset 1 2\n", "takes 3"},
-      {"tab Plots\n", "Pipeline, NDT, PGO, Keyframe or Export"},
+      {"tab Plots\n", "Pipeline, NDT, PGO, Keyframe, Events, Compare or Export"},
+      {"plot speed on\n", "unknown plot 'speed'"},
+      {"plot score maybe\n", "on or off"},
+      {"compare\n", "takes 1"},
+      {"measure 1 2 3\n", "four numbers"},
+      {"measure 1 2 x 4\n", "four numbers"},
+      {"measure truth\n", "or 'match'"},
+      {"pick 1\n", "takes 2"},
+      {"pick 1 y\n", "two numbers"},
+      {"save-session\n", "takes 1"},
+      {"load-session a b\n", "takes 1"},
       {"odometry\n", "takes 1 to 3"},
       {"odometry a.tum tum first x\n", "takes 1 to 3"},
       {"odometry a.tum csv\n", "auto, tum or kitti"},

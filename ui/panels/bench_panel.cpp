@@ -17,10 +17,12 @@ void drawBenchPanel(AppState& state) {
       const char* name;
       void (*draw)(AppState&);
     } tabs[] = {{"Pipeline", drawPipelineTab}, {"NDT", drawNdtTab}, {"PGO", drawPgoTab},
-                {"Keyframe", drawKeyframeTab}, {"Events", drawEventsTab}, {"Export", drawExportTab}};
+                {"Keyframe", drawKeyframeTab}, {"Events", drawEventsTab}, {"Compare", drawCompareTab},
+                {"Export", drawExportTab}};
     for (const auto& tab : tabs) {
       const bool select = state.selectTab == tab.name;
       if (ImGui::BeginTabItem(tab.name, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0)) {
+        state.currentTab = tab.name;
         tab.draw(state);
         ImGui::EndTabItem();
       }

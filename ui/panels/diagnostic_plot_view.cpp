@@ -14,6 +14,7 @@ namespace {
 
 constexpr ImU32 kSeriesColours[] = {IM_COL32(235, 235, 235, 255), IM_COL32(255, 150, 60, 255)};
 constexpr ImU32 kThresholdColour = IM_COL32(255, 70, 70, 220);
+constexpr ImU32 kComparisonColours[] = {IM_COL32(77, 255, 191, 255), IM_COL32(40, 190, 140, 255)};  // run B, as its trajectory
 
 ImU32 classColour(const PriorConstraint& c) {
   const Eigen::Vector4f v = render::constraintColour(render::constraintClass(c));
@@ -128,7 +129,7 @@ void drawDiagnosticPlot(AppState& state, const DiagnosticPlot& plot, const std::
   for (const DiagnosticRun& run : runs) {
     if (plot.threshold) drawField(draw, area, *run.rows, *plot.threshold, kThresholdColour, run.dashed);
     for (size_t i = 0; i < plot.series.size(); ++i)
-      drawField(draw, area, *run.rows, plot.series[i].field, kSeriesColours[i % 2], run.dashed);
+      drawField(draw, area, *run.rows, plot.series[i].field, (run.dashed ? kComparisonColours : kSeriesColours)[i % 2], run.dashed);
     drawMarkers(draw, area, *run.rows, plot.series[0].field);
   }
   const float playhead = area.xOf(double(state.frame().index));

@@ -30,6 +30,26 @@ void writeTrajectories(AppState& state, const std::filesystem::path& dir) {
   }
 }
 
+// Save session writes the view (frame, camera, layers, tab, plots, bookmarks, runs A and B) to a
+// file that `hdprior view LOG --session FILE` and `hdprior snapshot --session FILE` restore.
+void drawSession(AppState& state) {
+  static char file[512] = "session.json";
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(-200);
+  ImGui::InputText("##session", file, sizeof file);
+  ImGui::SameLine();
+  try {
+    if (ImGui::Button("Save session")) {
+      writeViewSession(file, state.session());
+      state.bench().message = std::string("wrote ") + file;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Load session")) state.restore(readViewSession(file));
+  } catch (const Error& e) {
+    state.bench().message = e.what();
+  }
+}
+
 }  // namespace
 
 void drawExportTab(AppState& state) {
@@ -56,6 +76,7 @@ void drawExportTab(AppState& state) {
     bench.configPath = folder / "config.json";
     bench.saveConfig();
   }
+  drawSession(state);
   if (!bench.message.empty()) ImGui::TextWrapped("%s", bench.message.c_str());
   if (!bench.runner().lastJob().empty()) ImGui::TextWrapped("%s", bench.runner().lastJob().c_str());
 }

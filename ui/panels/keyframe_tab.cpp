@@ -100,6 +100,23 @@ void drawMatch(const KeyframeInspection& in) {
   }
 }
 
+// Run B's match of the same keyframe, when comparing.
+void drawComparisonMatch(const render::Analysis& a) {
+  if (!a.comparison || !a.comparison->inspection) return;
+  const KeyframeInspection& b = *a.comparison->inspection;
+  ImGui::Separator();
+  const PriorConstraint c = constraintOf(b.match);
+  ImGui::Text("B (%s), its keyframe %zu:", a.comparison->name.c_str(), b.keyframe);
+  ImGui::PushStyleColor(ImGuiCol_Text, constraintColor(render::constraintClass(c)));
+  ImGui::TextWrapped("  constrains: %s", c.label().c_str());
+  ImGui::PopStyleColor();
+  ImGui::Text("  score %.1f, inliers %.2f, %zu road points", b.match.score, b.match.inlierRatio, b.roadPoints.size());
+  if (b.truth) {
+    const Eigen::Vector3d e = planarError(*b.truth, b.match.estimate);
+    ImGui::Text("  error: along %.3f, lateral %.3f m, yaw %.2f deg", e.x(), e.y(), e.z() * kDeg);
+  }
+}
+
 void drawPriorResidual(const Session& session, size_t k) {
   if (k >= session.matches().size() || !session.graph()) return;
   const KeyframeMatch& m = session.matches()[k];
@@ -135,6 +152,8 @@ void drawKeyframeTab(AppState& state) {
   ImGui::Separator();
   ImGui::Text("match (tuned options):");
   drawMatch(*inspection);
+  if (inspection->truth && ImGui::SmallButton("measure estimate -> truth")) state.measureMatchError();
+  drawComparisonMatch(state.bench().analysis());
   ImGui::Separator();
   drawPriorResidual(*session, inspection->keyframe);
 }

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <vector>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "engine/geom/se2.h"
 #include "engine/map/hd_map.h"
@@ -163,6 +165,29 @@ void drawYawProfile(AppState& state) {
   ImGui::PlotLines("##yaw", values.data(), int(values.size()), 0, label, *lo, *hi, ImVec2(ImGui::GetContentRegionAvail().x, 60));
 }
 
+// Every re-match: what changed, then what came out; a click restores the row's parameters.
+void drawHistory(AppState& state) {
+  TuningBench& bench = state.bench();
+  const auto& rows = bench.history.rows();
+  ImGui::BeginChild("history", ImVec2(0, 160), true);
+  std::optional<size_t> restore;
+  for (size_t i = rows.size(); i-- > 0;) {
+    const MatchHistoryRow& r = rows[i];
+    std::string changes;
+    for (const std::string& c : r.changes) changes += (changes.empty() ? "" : "; ") + c;
+    char result[160];
+    if (r.error)
+      std::snprintf(result, sizeof result, "%s, score %.1f, error %.2f / %.2f m / %.2f deg", r.constraint.c_str(), r.score,
+                    r.error->x(), r.error->y(), r.error->z() / kDeg);
+    else
+      std::snprintf(result, sizeof result, "%s, score %.1f", r.constraint.c_str(), r.score);
+    const std::string label = std::to_string(i) + "  kf " + std::to_string(r.keyframe) + "  " + changes + "\n    " + result + "##h" + std::to_string(i);
+    if (ImGui::Selectable(label.c_str(), false)) restore = i;
+  }
+  ImGui::EndChild();
+  if (restore) bench.restoreHistory(*restore);
+}
+
 void drawConfigFile(AppState& state) {
   TuningBench& bench = state.bench();
   char path[512];
@@ -198,6 +223,7 @@ void drawNdtTab(AppState& state) {
   if (ImGui::CollapsingHeader("Road points")) changed |= drawRoadPoints(state);
   ImGui::PopItemWidth();
   if (ImGui::CollapsingHeader("Config file", ImGuiTreeNodeFlags_DefaultOpen)) drawConfigFile(state);
+  if (ImGui::CollapsingHeader("History (click: restore)", ImGuiTreeNodeFlags_DefaultOpen)) drawHistory(state);
   if (!bench.message.empty()) ImGui::TextWrapped("%s", bench.message.c_str());
   if (changed && ready && state.autoMatch && bench.selected()) bench.matchSelected();
 }

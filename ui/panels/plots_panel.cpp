@@ -20,6 +20,7 @@ ImU32 seriesColor(AteSeries::Kind kind) {
   switch (kind) {
     case AteSeries::Kind::File: return IM_COL32(235, 110, 235, 255);
     case AteSeries::Kind::Odometry: return IM_COL32(255, 150, 60, 255);
+    case AteSeries::Kind::Comparison: return IM_COL32(77, 255, 191, 255);
     case AteSeries::Kind::Optimized: break;
   }
   return IM_COL32(80, 200, 255, 255);
@@ -85,7 +86,9 @@ void drawAtePlot(AppState& state, const std::vector<AteSeries>& series, ImVec2 o
 
 // The shown diagnostic plots, two to a row, in [origin, origin + size].
 void drawDiagnostics(AppState& state, ImVec2 origin, ImVec2 size) {
-  const std::vector<DiagnosticRun> runs = {{&state.bench().analysis().diagnostics, "A"}};
+  const render::Analysis& a = state.bench().analysis();
+  std::vector<DiagnosticRun> runs = {{&a.diagnostics, "A"}};
+  if (a.comparison) runs.push_back({&a.comparison->diagnostics, "B", true});
   const size_t n = state.shownPlots.size(), columns = n > 1 ? 2 : 1;
   const float w = size.x / float(columns), h = kDiagnosticRowHeight;
   for (size_t i = 0; i < n; ++i) {

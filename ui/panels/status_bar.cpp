@@ -26,6 +26,21 @@ void drawStatusBar(AppState& state) {
     ImGui::End();
     return;
   }
+  if (state.measuring || state.picking) ImGui::Text("  |  %s", state.measuring ? "MEASURE" : "PICK");
+  if (state.lastMeasure && state.measuring) {
+    const GroundMeasure& m = *state.lastMeasure;
+    ImGui::SameLine();
+    ImGui::Text("  %.3f m: along %.3f, across %.3f, rise %.3f", m.distance, m.along, m.lateral, m.rise);
+    ImGui::End();
+    return;
+  }
+  if (!state.lastPick.empty() && state.picking) {
+    ImGui::SameLine();
+    ImGui::TextUnformatted(state.lastPick.c_str());
+    ImGui::End();
+    return;
+  }
+  ImGui::SameLine();
   if (state.cursor) {
     const GroundCursor& c = *state.cursor;
     if (std::isfinite(c.groundHeight))

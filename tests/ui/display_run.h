@@ -1,0 +1,21 @@
+#pragma once
+#include <filesystem>
+#include <string>
+
+#include "test_data.h"
+
+namespace hdprior::test {
+
+// A path in single quotes, for a shell command line.
+std::string quoted(const std::filesystem::path& p);
+// The whole file (empty if it cannot be read).
+std::string slurp(const std::filesystem::path& p);
+void writeText(const std::filesystem::path& path, const std::string& text);
+
+// Runs `hdprior ARGS` under a fresh virtual X server (xvfb-run, 1280x800), as CI does; stdout and
+// stderr go to files in `dir`. The X authority file is the test's own (-f): xvfb-run then has no
+// temporary folder to remove, whose removal sometimes fails under load and turns the command's exit
+// status into 5.
+CommandResult runWithDisplay(const std::string& args, const std::filesystem::path& dir, const std::string& env = "");
+
+}  // namespace hdprior::test
