@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The pictures of README.md and docs/app.md, drawn by `hdprior snapshot` and `hdprior view` from the
-# shared real Argoverse 2 log. Paths are relative to the repository:
+# shared real Argoverse 2 log (and, for the debugging bench, a simulated 12 s town drive, whose 40
+# keyframes give its plots something to show). Paths are relative to the repository:
 #   scripts/make-readme-picture.sh [DATA_DIR]    DATA_DIR defaults to ../shared/data
 # HDPRIOR names the binary (default build/app/hdprior). The app's picture needs xvfb-run.
 set -euo pipefail
@@ -21,7 +22,15 @@ if command -v xvfb-run >/dev/null; then
   trap 'rm -f "$script"' EXIT
   printf 'run\ntab NDT\nmatch\nwait 3\nscreenshot %s\nexit\n' "$out/app-bench.png" > "$script"
   xvfb-run -a -s "-screen 0 1280x800x24" "$hdprior" view "$log" --script "$script" --size 1280x800
+  # README and docs/app.md: the debugging bench comparing two outlier ratios on a simulated drive.
+  sim="$(mktemp -d)"
+  trap 'rm -rf "$script" "$sim"' EXIT
+  "$hdprior" sim --town 1 --seed 7 --seconds 12 --out "$sim" --quiet > /dev/null
+  printf '{"match": {"outlier_ratio": 0.3}}\n' > "$sim/b.json"
+  printf 'run\ncompare %s\nplot score on\nplot sigma_lateral on\nplot chi2 on\nplot error_lateral on\nkeyframe 6\ntab Compare\nwait 3\nscreenshot %s\nexit\n' \
+    "$sim/b.json" "$out/app-debugging-bench.png" > "$script"
+  xvfb-run -a -s "-screen 0 1280x800x24" "$hdprior" view "$sim"/*/ --script "$script" --size 1280x800
 else
-  echo "make-readme-picture.sh: xvfb-run not found: $out/app-bench.png not redrawn" >&2
+  echo "make-readme-picture.sh: xvfb-run not found: $out/app-bench.png, app-debugging-bench.png not redrawn" >&2
 fi
 ls -l "$out"

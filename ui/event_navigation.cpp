@@ -10,7 +10,7 @@ std::optional<size_t> stepEvent(const std::vector<RunEvent>& events, std::option
   }
   if (direction > 0) {
     for (size_t i = 0; i < events.size(); ++i)
-      if (events[i].frame > frame) return i;
+      if (events[i].frame >= frame) return i;
   } else {
     for (size_t i = events.size(); i-- > 0;)
       if (events[i].frame < frame) return i;

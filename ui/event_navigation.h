@@ -15,8 +15,9 @@ struct Bookmark {
 };
 
 // The event N (direction +1) or Shift+N (-1) goes to from the current frame: the next one in that
-// direction among those at the same frame as `current` (the event last gone to), else the first
-// beyond the frame. nullopt: none that way.
+// direction after `current` (the event last gone to) while the view is still at its frame; else N
+// goes to the first event at or after the frame (one here not yet visited counts), Shift+N to the
+// last one before it. nullopt: none that way.
 std::optional<size_t> stepEvent(const std::vector<RunEvent>& events, std::optional<size_t> current, size_t frame, int direction);
 
 }  // namespace hdprior::ui

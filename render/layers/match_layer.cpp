@@ -8,6 +8,7 @@
 
 #include "render/analysis.h"
 #include "render/layers/analysis_drawing.h"
+#include "render/layers/stroke_meshes.h"
 #include "render/layers/layer_drawing.h"
 #include "render/scene.h"
 
@@ -52,11 +53,6 @@ void MatchLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
 }
 
 void MatchLayer::build(const Scene& scene) {
-  if (!quads_) {
-    quads_ = std::make_unique<GpuMesh>();
-    lines_ = std::make_unique<GpuMesh>();
-    dots_ = std::make_unique<GpuMesh>();
-  }
   Strokes strokes;
   std::vector<ColoredVertex> dots;
   if (const KeyframeInspection* inspected = inspection()) {
@@ -80,16 +76,11 @@ void MatchLayer::build(const Scene& scene) {
     if (k.truth && !comparison_) marker(*k.truth, truth_);
     marker(k.match.estimate, estimate_);
   }
-  quads_->upload(std::span<const ColoredVertex>(strokes.quads));
-  lines_->upload(std::span<const ColoredVertex>(strokes.lines));
-  dots_->upload(std::span<const ColoredVertex>(dots));
+  meshes_.upload(strokes, dots);
 }
 
 void MatchLayer::draw(const DrawContext& context) const {
-  if (!quads_) return;
-  if (quads_->size() > 0) drawColored(context, *quads_, Primitive::Triangles);
-  if (lines_->size() > 0) drawColored(context, *lines_, Primitive::Lines);
-  if (dots_->size() > 0) drawColored(context, *dots_, Primitive::Points, dotSize_, true);
+  meshes_.draw(context, dotSize_);
 }
 
 std::vector<MarkerKey> MatchLayer::markerKeys() const {

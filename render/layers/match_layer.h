@@ -1,7 +1,7 @@
 #pragma once
 #include <memory>
 
-#include "render/gpu_mesh.h"
+#include "render/layers/stroke_meshes.h"
 #include "render/layer.h"
 
 namespace hdprior {
@@ -33,7 +33,7 @@ class MatchLayer : public Layer {
 
   bool comparison_ = false;
   const Analysis* analysis_ = nullptr;
-  std::unique_ptr<GpuMesh> quads_, lines_, dots_;
+  StrokeMeshes meshes_;
   float width_ = 0.05f;       // metres
   float tick_ = 1.5f;         // heading tick length, metres
   float maxHalfAxis_ = 10.0f;  // metres

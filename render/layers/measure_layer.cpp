@@ -5,6 +5,7 @@
 
 #include "render/analysis.h"
 #include "render/layers/analysis_drawing.h"
+#include "render/layers/stroke_meshes.h"
 #include "render/layers/layer_drawing.h"
 #include "render/scene.h"
 
@@ -16,11 +17,6 @@ void MeasureLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
 }
 
 void MeasureLayer::build(const Scene& scene) {
-  if (!quads_) {
-    quads_ = std::make_unique<GpuMesh>();
-    lines_ = std::make_unique<GpuMesh>();
-    dots_ = std::make_unique<GpuMesh>();
-  }
   Strokes strokes;
   std::vector<ColoredVertex> dots;
   if (analysis_ && analysis_->measure) {
@@ -35,16 +31,11 @@ void MeasureLayer::build(const Scene& scene) {
     dots.push_back({at(m.from), line_});
     dots.push_back({at(m.to), line_});
   }
-  quads_->upload(std::span<const ColoredVertex>(strokes.quads));
-  lines_->upload(std::span<const ColoredVertex>(strokes.lines));
-  dots_->upload(std::span<const ColoredVertex>(dots));
+  meshes_.upload(strokes, dots);
 }
 
 void MeasureLayer::draw(const DrawContext& context) const {
-  if (!quads_) return;
-  if (quads_->size() > 0) drawColored(context, *quads_, Primitive::Triangles);
-  if (lines_->size() > 0) drawColored(context, *lines_, Primitive::Lines);
-  if (dots_->size() > 0) drawColored(context, *dots_, Primitive::Points, 9.0f, true);
+  meshes_.draw(context, 9.0f);
 }
 
 std::vector<MarkerKey> MeasureLayer::markerKeys() const {

@@ -1,7 +1,7 @@
 #pragma once
 #include <memory>
 
-#include "render/gpu_mesh.h"
+#include "render/layers/stroke_meshes.h"
 #include "render/layer.h"
 
 namespace hdprior::render {
@@ -22,7 +22,7 @@ class MeasureLayer : public Layer {
   void build(const Scene& scene);
 
   const Analysis* analysis_ = nullptr;
-  std::unique_ptr<GpuMesh> quads_, lines_, dots_;
+  StrokeMeshes meshes_;
   float width_ = 0.06f;  // metres
   Eigen::Vector4f line_{1.0f, 1.0f, 0.2f, 1.0f}, along_{0.3f, 0.9f, 1.0f, 0.9f}, lateral_{1.0f, 0.4f, 0.6f, 0.9f};
 };

@@ -18,6 +18,7 @@
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/lidar_sweep.h"
+#include "engine/map/hd_map.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/pipeline_run.h"
 #include "engine/pipeline/session.h"

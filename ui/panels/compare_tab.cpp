@@ -88,7 +88,7 @@ void landscapes(AppState& state) {
   const render::Analysis& a = state.bench().analysis();
   if (!a.comparison) return;
   ImGui::Separator();
-  ImGui::Text("cost landscapes of the current keyframe (estimate at the centre)");
+  ImGui::TextWrapped("cost landscapes of the current keyframe, each around its estimate (circle)");
   const float side = (ImGui::GetContentRegionAvail().x - 12) / 2;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const struct {
