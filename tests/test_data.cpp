@@ -31,6 +31,13 @@ fs::path sharedLog() {
   return log;
 }
 
+std::string quoted(const fs::path& p) {
+  std::string s = "'";  // appended, not "'" + string: GCC 12 warns falsely (-Wrestrict) on that
+  s += p.string();
+  s += "'";
+  return s;
+}
+
 fs::path freshOutputDir(const std::string& name) {
   const fs::path dir = fs::path(HDPRIOR_TEST_OUTPUT) / name;
   fs::remove_all(dir);

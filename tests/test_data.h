@@ -26,6 +26,9 @@ std::string readFileText(const std::filesystem::path& path);
 std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const std::filesystem::path& file, double dx, double dy,
                                       double dz);
 
+// A path in single quotes, for runHdprior's command line.
+std::string quoted(const std::filesystem::path& path);
+
 // Runs the hdprior binary with arguments; returns exit status, captures stdout/stderr.
 struct CommandResult {
   int status = -1;

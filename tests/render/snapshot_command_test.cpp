@@ -13,13 +13,6 @@ namespace hdprior::test {
 namespace {
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& p) {
-  std::string s = "'";  // appended, not "'" + string: GCC 12 warns falsely (-Wrestrict) on that
-  s += p.string();
-  s += "'";
-  return s;
-}
-
 // The command draws the same picture as the library (it is the same renderer).
 TEST(SnapshotCommand, WritesThePngOfTheGolden) {
   const fs::path dir = freshOutputDir("snapshot_command");
