@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/common_options.h"
@@ -17,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct PlotArguments {
-  std::string run, out, plots, compare;
+  std::string run, out, plots;
+  std::optional<std::string> compare;
 };
 
 // The run folder's name as the figure shows it ("run_a" for "out/run_a/").
@@ -29,6 +31,7 @@ std::string folderName(const fs::path& dir) {
 // A run folder's diagnostics; `what` names the folder in the messages about it ("argument RUN_DIR").
 DiagnosticsRun readRun(const fs::path& dir, const std::string& what) {
   std::error_code ec;
+  if (dir.empty()) throw Error(what, "needs a run folder");
   if (!fs::exists(dir, ec)) throw Error(what, dir.string() + ": no such run folder (`hdprior run LOG --out DIR` writes one)");
   if (!fs::is_directory(dir, ec)) throw Error(what, dir.string() + ": not a folder (expected a run folder)");
   const fs::path file = dir / "keyframes.json";
@@ -41,7 +44,7 @@ int runPlot(const PlotArguments& a) {
   const fs::path out = a.out;
   checkOutputFile(out);
   std::vector<DiagnosticsRun> runs{readRun(a.run, "argument RUN_DIR")};
-  if (!a.compare.empty()) runs.push_back(readRun(a.compare, "option --compare"));
+  if (a.compare) runs.push_back(readRun(*a.compare, "option --compare"));
   const std::vector<const DiagnosticPlot*> plots =
       a.plots.empty() ? plotsWithValues(runs) : parseDiagnosticPlotList(a.plots, "option --plots");
   if (plots.empty()) throw Error((fs::path(a.run) / "keyframes.json").string(), "no keyframe diagnostic has a value to plot");

@@ -1,4 +1,6 @@
 #pragma once
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 
@@ -36,5 +38,8 @@ struct CommandResult {
   std::string err;
 };
 CommandResult runHdprior(const std::string& args);
+
+// Whether a command failed as bad input must: exit status 2 and one line on stderr holding `message`.
+::testing::AssertionResult failedWithOneLine(const CommandResult& result, const std::string& message);
 
 }  // namespace hdprior::test
