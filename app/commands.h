@@ -28,5 +28,6 @@ Command addEvalCommand(CLI::App& hdprior);
 Command addMergeCommand(CLI::App& hdprior);
 Command addDegradeTrajectoryCommand(CLI::App& hdprior);
 Command addConfigCommand(CLI::App& hdprior);
+Command addPlotCommand(CLI::App& hdprior);
 
 }  // namespace hdprior::app

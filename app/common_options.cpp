@@ -35,6 +35,12 @@ std::filesystem::path outputFolder(const std::filesystem::path& out) {
   return out;
 }
 
+void checkOutputFile(const std::filesystem::path& out) {
+  const std::filesystem::path folder = out.parent_path().empty() ? "." : out.parent_path();
+  if (!std::filesystem::is_directory(folder)) throw Error(out.string(), "its folder does not exist");
+  if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
+}
+
 void addOdometryFileOptions(CLI::App& command, OdometryFileArguments& arguments, CLI::Option* source) {
   command.add_option("--odometry-format", arguments.format, "the trajectory file's format (default: detected from its lines)")
       ->type_name("tum|kitti")

@@ -30,6 +30,8 @@ Config configOf(const ConfigArguments& arguments);
 
 // An output folder: returned as given when it does not exist yet or is a folder; throws otherwise.
 std::filesystem::path outputFolder(const std::filesystem::path& out);
+// An output file (a PNG): throws, naming it, when its folder does not exist or it is a folder.
+void checkOutputFile(const std::filesystem::path& out);
 
 // How to read a trajectory file given as the odometry: --odometry-format tum|kitti (default: detected,
 // trajectory_file.h), --odometry-frame first|city (default first) and, for commands that add it,

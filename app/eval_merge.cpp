@@ -30,14 +30,6 @@ LogEvaluation resultOf(const fs::path& out, const fs::path& log) {
   return e;
 }
 
-render::Image rgba(const RgbImage& im) {
-  render::Image out{im.width, im.height, std::vector<uint8_t>(size_t(im.width) * size_t(im.height) * 4, 255)};
-  for (size_t p = 0; p < size_t(im.width) * size_t(im.height); ++p) {
-    for (size_t c = 0; c < 3; ++c) out.rgba[p * 4 + c] = im.rgb[p * 3 + c];
-  }
-  return out;
-}
-
 }  // namespace
 
 int mergeEvaluation(const fs::path& out, const std::vector<fs::path>& logs, const std::string& command) {
@@ -48,7 +40,7 @@ int mergeEvaluation(const fs::path& out, const std::vector<fs::path>& logs, cons
   writeFileAtomically(out / "per_log.csv", perLogCsv(results));
   writeFileAtomically(out / "table.md", table);
   writeFileAtomically(out / "table.csv", summaryCsv(summary));
-  render::writePng(out / "rmse_boxplot.png", rgba(rmseBoxPlot(results)));
+  render::writePng(out / "rmse_boxplot.png", rmseBoxPlot(results));
 
   std::printf("%s\nwrote %s (per_log.csv, table.md, table.csv, rmse_boxplot.png, a folder per log)\n", table.c_str(),
               out.string().c_str());

@@ -51,12 +51,6 @@ struct SnapshotArguments {
   OdometryFileArguments odometryFile;
 };
 
-void checkOutput(const std::filesystem::path& out) {
-  const std::filesystem::path outDir = out.parent_path().empty() ? "." : out.parent_path();
-  if (!std::filesystem::is_directory(outDir)) throw Error(out.string(), "its folder does not exist");
-  if (std::filesystem::is_directory(out)) throw Error(out.string(), "is a directory, expected a .png file name");
-}
-
 // The session's visible layers in drawing order, with their opacities; throws for an unknown layer.
 void sessionLayers(const ui::ViewSession& s, const std::string& file, render::SnapshotOptions& options) {
   std::string list;
@@ -102,7 +96,7 @@ int runSessionSnapshot(const SnapshotArguments& a) {
   render::parseSize(a.size, options.width, options.height);
   sessionLayers(s, a.session, options);
   if (options.layers.empty()) throw Error(a.session, "no layer is visible");
-  checkOutput(a.out);
+  checkOutputFile(a.out);
   const Config config = parseConfig(s.config, a.session + " (config)");
   const ArgoverseLog log(a.log.empty() ? s.log : std::filesystem::path(a.log));
   if (s.frame >= log.sweepCount())
@@ -137,7 +131,7 @@ int runSnapshot(const SnapshotArguments& a) {
   if (inspectorView && !keyframe) throw Error("option --view", "the landscape and inspector views need --keyframe K");
   if (!a.frame && !keyframe) throw Error("option --frame", "missing (the frame to draw)");
   const std::filesystem::path out = a.out;
-  checkOutput(out);
+  checkOutputFile(out);
   const Config config = configOf(a.config);
   const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
 

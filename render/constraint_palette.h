@@ -1,34 +1,14 @@
 #pragma once
-#include <array>
-#include <optional>
-
-#include <Eigen/Core>
-
-#include "engine/pipeline/prior_constraint.h"
+#include "engine/pipeline/constraint_colour.h"
 
 namespace hdprior::render {
 
-// How a keyframe is coloured wherever it is drawn (the keyframes layer, the bench's list and plots):
-// by what its prior fixes, or why it has none.
-enum class ConstraintClass { Full, Partial, Gated, Rejected, NoPrior };
-inline constexpr size_t kConstraintClasses = 5;
-inline constexpr std::array<const char*, kConstraintClasses> kConstraintClassNames = {
-    "full", "partial (e.g. lateral + yaw)", "gated", "rejected", "no prior"};
-
-inline ConstraintClass constraintClass(const std::optional<PriorConstraint>& c) {
-  if (!c) return ConstraintClass::NoPrior;
-  if (c->kind == PriorConstraint::Kind::Rejected) return ConstraintClass::Rejected;
-  if (c->kind == PriorConstraint::Kind::Gated) return ConstraintClass::Gated;
-  return c->full() ? ConstraintClass::Full : ConstraintClass::Partial;
-}
-
-// RGBA in 0..1: green, sky blue (the normal case on a straight road, not a warning), yellow, red, grey.
-inline Eigen::Vector4f constraintColour(ConstraintClass c) {
-  static const std::array<Eigen::Vector4f, kConstraintClasses> colours = {
-      Eigen::Vector4f(0.20f, 0.85f, 0.30f, 1.0f), Eigen::Vector4f(0.30f, 0.65f, 1.00f, 1.0f),
-      Eigen::Vector4f(1.00f, 0.85f, 0.15f, 1.0f), Eigen::Vector4f(0.95f, 0.20f, 0.20f, 1.0f),
-      Eigen::Vector4f(0.60f, 0.60f, 0.60f, 1.0f)};
-  return colours[size_t(c)];
-}
+// The keyframes' status colours, as the engine defines them (engine/pipeline/constraint_colour.h,
+// also used by `hdprior plot`), under the renderer's names.
+using hdprior::ConstraintClass;
+using hdprior::constraintClass;
+using hdprior::constraintColour;
+using hdprior::kConstraintClasses;
+using hdprior::kConstraintClassNames;
 
 }  // namespace hdprior::render

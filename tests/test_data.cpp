@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fcntl.h>
@@ -31,6 +32,13 @@ fs::path sharedLog() {
     throw std::runtime_error("shared data missing");
   }
   return log;
+}
+
+std::string quoted(const fs::path& p) {
+  std::string s = "'";  // appended, not "'" + string: GCC 12 warns falsely (-Wrestrict) on that
+  s += p.string();
+  s += "'";
+  return s;
 }
 
 fs::path freshOutputDir(const std::string& name) {
@@ -133,6 +141,13 @@ std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const st
   for (SE3& pose : moved) pose.translation() += Eigen::Vector3d(dx, dy, dz);
   writeTum(file, PoseTrajectory(truth.timestamps(), moved));
   return file;
+}
+
+::testing::AssertionResult failedWithOneLine(const CommandResult& r, const std::string& message) {
+  if (r.status != 2) return ::testing::AssertionFailure() << "exit status " << r.status << ", not 2; stderr: " << r.err;
+  if (r.err.find(message) == std::string::npos) return ::testing::AssertionFailure() << "'" << message << "' not in: " << r.err;
+  if (std::count(r.err.begin(), r.err.end(), '\n') != 1) return ::testing::AssertionFailure() << "not one line: " << r.err;
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace hdprior::test

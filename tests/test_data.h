@@ -1,4 +1,6 @@
 #pragma once
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 
@@ -36,6 +38,9 @@ std::string readFileText(const std::filesystem::path& path);
 std::filesystem::path writeMovedTruth(const std::filesystem::path& log, const std::filesystem::path& file, double dx, double dy,
                                       double dz);
 
+// A path in single quotes, for runHdprior's command line.
+std::string quoted(const std::filesystem::path& path);
+
 // Runs the hdprior binary with arguments; returns exit status, captures stdout/stderr.
 struct CommandResult {
   int status = -1;
@@ -43,5 +48,8 @@ struct CommandResult {
   std::string err;
 };
 CommandResult runHdprior(const std::string& args);
+
+// Whether a command failed as bad input must: exit status 2 and one line on stderr holding `message`.
+::testing::AssertionResult failedWithOneLine(const CommandResult& result, const std::string& message);
 
 }  // namespace hdprior::test

@@ -54,6 +54,11 @@ std::string sessionReport(TuningBench& bench, const Session* session) {
     std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
     out += line;
   }
+  if (const auto& rows = bench.history.rows(); !rows.empty()) {
+    std::string changes;
+    for (const std::string& c : rows.back().changes) changes += (changes.empty() ? "" : "; ") + c;
+    out += "history: " + std::to_string(rows.size()) + " rows, last: " + changes + " => " + rows.back().constraint + "\n";
+  }
   out += "odometry: " + odometrySourceText(*session) + "\n";
   std::snprintf(line, sizeof line, "ate rmse: odometry %.4f optimized %.4f\n", finiteRmse(bench.analysis().odometryError),
                 finiteRmse(bench.analysis().optimizedError));

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "engine/eval/axis_ticks.h"
 #include "engine/eval/bitmap_font.h"
 
 namespace hdprior {
@@ -19,22 +19,6 @@ double quantile(const std::vector<double>& sorted, double p) {
   const size_t lo = size_t(std::floor(h));
   if (lo + 1 >= sorted.size()) return sorted.back();
   return sorted[lo] + (h - double(lo)) * (sorted[lo + 1] - sorted[lo]);
-}
-
-// The tick step: 1, 2 or 5 x 10^k giving 4 to 8 intervals.
-double niceStep(double range) {
-  const double raw = range / 8.0;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0}) {
-    if (m * magnitude >= raw) return m * magnitude;
-  }
-  return 10.0 * magnitude;
-}
-
-std::string tickLabel(double value, int decimals) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.*f", decimals, value);
-  return b;
 }
 
 Rgb darker(Rgb c) { return {uint8_t(c.r * 0.6), uint8_t(c.g * 0.6), uint8_t(c.b * 0.6)}; }
@@ -124,10 +108,10 @@ BoxPlotLayout boxPlotLayout(const std::vector<BoxPlotSeries>& series, const BoxP
     for (double v : s.values) maxValue = std::max(maxValue, v);
   }
   if (maxValue > 0) {
-    L.yTick = niceStep(maxValue * 1.05);
+    L.yTick = niceStep(maxValue * 1.05, 8);  // 4 to 8 intervals
     L.yMax = std::ceil(maxValue * 1.05 / L.yTick) * L.yTick;
   }
-  L.tickDecimals = std::max(0, -int(std::floor(std::log10(L.yTick) + 1e-9)));
+  L.tickDecimals = tickDecimals(L.yTick);
   const int labelWidth = textWidth(tickLabel(L.yMax, L.tickDecimals), kFontScale);
   L.left = kMargin + textHeight(kFontScale) + 12 + labelWidth + 4 + kTickLength;
   L.top = kMargin + textHeight(kFontScale) + 24;

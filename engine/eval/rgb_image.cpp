@@ -1,6 +1,7 @@
 #include "engine/eval/rgb_image.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hdprior {
 
@@ -32,6 +33,16 @@ void RgbImage::fillDisc(int cx, int cy, int radius, Rgb c) {
     for (int dx = -radius; dx <= radius; ++dx) {
       if (dx * dx + dy * dy <= radius * radius + radius) set(cx + dx, cy + dy, c);
     }
+  }
+}
+
+void RgbImage::drawLine(double x0, double y0, double x1, double y1, int thickness, Rgb c) {
+  const int steps = std::max(1, int(std::ceil(std::max(std::abs(x1 - x0), std::abs(y1 - y0)))));
+  const int half = thickness / 2;
+  for (int i = 0; i <= steps; ++i) {
+    const double t = double(i) / steps;
+    const int x = int(std::lround(x0 + t * (x1 - x0))) - half, y = int(std::lround(y0 + t * (y1 - y0))) - half;
+    fillRect(x, y, x + thickness, y + thickness, c);
   }
 }
 

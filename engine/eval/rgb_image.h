@@ -23,6 +23,8 @@ struct RgbImage {
   void set(int x, int y, Rgb c);
   void fillRect(int x0, int y0, int x1, int y1, Rgb c);  // [x0, x1) x [y0, y1)
   void fillDisc(int cx, int cy, int radius, Rgb c);
+  // A straight line between two points in pixel coordinates, `thickness` pixels wide.
+  void drawLine(double x0, double y0, double x1, double y1, int thickness, Rgb c);
 };
 
 }  // namespace hdprior

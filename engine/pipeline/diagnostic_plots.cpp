@@ -1,5 +1,9 @@
 #include "engine/pipeline/diagnostic_plots.h"
 
+#include <algorithm>
+
+#include "engine/error.h"
+
 namespace hdprior {
 
 const std::vector<DiagnosticPlot>& diagnosticPlots() {
@@ -33,6 +37,21 @@ std::string diagnosticPlotNames() {
   std::string s;
   for (const DiagnosticPlot& p : diagnosticPlots()) s += (s.empty() ? "" : ", ") + std::string(p.name);
   return s;
+}
+
+std::vector<const DiagnosticPlot*> parseDiagnosticPlotList(std::string_view list, const std::string& where) {
+  std::vector<const DiagnosticPlot*> plots;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t end = std::min(list.find(',', start), list.size());
+    const std::string_view name = list.substr(start, end - start);
+    if (name.empty()) throw Error(where, "empty plot name in '" + std::string(list) + "' (plots: " + diagnosticPlotNames() + ")");
+    const DiagnosticPlot* plot = findDiagnosticPlot(name);
+    if (!plot) throw Error(where, "unknown plot '" + std::string(name) + "' (plots: " + diagnosticPlotNames() + ")");
+    if (std::find(plots.begin(), plots.end(), plot) == plots.end()) plots.push_back(plot);
+    start = end + 1;
+  }
+  return plots;
 }
 
 }  // namespace hdprior

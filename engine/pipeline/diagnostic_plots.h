@@ -27,5 +27,8 @@ const std::vector<DiagnosticPlot>& diagnosticPlots();
 const DiagnosticPlot* findDiagnosticPlot(std::string_view name);
 // "score, inliers, ..." for messages.
 std::string diagnosticPlotNames();
+// The plots a comma-separated list names ("chi2,sigma_lateral"), in its order, each once; throws
+// Error(`where`, ...) for an unknown or empty name.
+std::vector<const DiagnosticPlot*> parseDiagnosticPlotList(std::string_view list, const std::string& where);
 
 }  // namespace hdprior

@@ -73,7 +73,7 @@ TEST(DebuggingBench, CompareRunsBAsRunDoesAndDrawsIt) {
   writeText(dir / "b.json", kOtherB);
   writeText(dir / "script.txt", "run\nwait 2\nscreenshot " + before.string() + "\ncompare " + (dir / "b.json").string() +
                                     "\nplot score on\nwait 3\nscreenshot " + after.string() +
-                                    "\nkeyframe 2\nreport\nmeasure match\ntab Compare\nwait 2\n");
+                                    "\nkeyframe 2\nreport\nmeasure match\noffset 0.5 0 0\nreport\ntab Compare\nwait 2\n");
   const CommandResult r = runWithDisplay("view " + quoted(drive.log) + " --config " + quoted(dir / "a.json") + " --script " +
                                              quoted(dir / "script.txt") + " --screenshot " + quoted(dir / "compare_tab.png"),
                                          dir);
@@ -106,6 +106,10 @@ TEST(DebuggingBench, CompareRunsBAsRunDoesAndDrawsIt) {
   EXPECT_NEAR(measured[1], -error[0], 1e-3) << r.out;  // along: from the estimate to the truth
   EXPECT_NEAR(measured[2], -error[1], 1e-3) << r.out;
   EXPECT_NEAR(measured[0], std::hypot(error[0], error[1]), 1e-3) << r.out;
+  // The NDT tab's history: the keyframe's match, then the re-match from the offset, with what changed.
+  EXPECT_NE(r.out.find("history: 1 rows, last: first match => "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("history: 2 rows, last: start offset (0.00, 0.00, 0.0 deg) -> (0.50, 0.00, 0.0 deg) => "), std::string::npos)
+      << r.out;
 }
 
 // A constructed pair on the real log's frame 0: 3 m along the ego heading and 2 m to its right,

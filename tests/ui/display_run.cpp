@@ -8,8 +8,6 @@
 
 namespace hdprior::test {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
-
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
   std::stringstream s;

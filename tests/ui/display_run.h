@@ -6,8 +6,7 @@
 
 namespace hdprior::test {
 
-// A path in single quotes, for a shell command line.
-std::string quoted(const std::filesystem::path& p);
+// quoted(path): test_data.h.
 // The whole file (empty if it cannot be read).
 std::string slurp(const std::filesystem::path& p);
 void writeText(const std::filesystem::path& path, const std::string& text);
