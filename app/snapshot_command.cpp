@@ -105,7 +105,8 @@ int runSessionSnapshot(const SnapshotArguments& a) {
                                            : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
   render::Analysis analysis = s.ran ? runAnalysis(log, *map, config, s.keyframe, std::nullopt) : render::Analysis{};
   if (s.comparison) {
-    const std::optional<size_t> frame = analysis.inspection ? std::optional(analysis.inspection->frame) : std::nullopt;
+    std::optional<size_t> frame;
+    if (analysis.inspection) frame = analysis.inspection->frame;
     analysis.comparison = sessionComparison(log, *s.comparison, a.session, frame);
   }
   render::Snapshotter snapshotter(log, *map, options);
