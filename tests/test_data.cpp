@@ -24,6 +24,8 @@ fs::path sharedDataDir() {
   return fs::path(env ? env : HDPRIOR_SHARED_DATA);
 }
 
+fs::path sourceDir() { return fs::path(HDPRIOR_SOURCE_DIR); }
+
 fs::path sharedLog() {
   const fs::path log = sharedDataDir() / "av2" / "7fab2350-7eaf-3b7e-a39d-6937a4c1bede";
   if (!fs::is_directory(log / "sensors" / "lidar")) {

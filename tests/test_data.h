@@ -10,6 +10,8 @@ namespace hdprior::test {
 // message saying where the data is expected when it is not there.
 std::filesystem::path sharedLog();
 std::filesystem::path sharedDataDir();
+// The repository (the source tree this build was configured from).
+std::filesystem::path sourceDir();
 
 // A fresh, empty directory for one test's outputs, under the build tree.
 std::filesystem::path freshOutputDir(const std::string& name);

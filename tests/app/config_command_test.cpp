@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "engine/pipeline/config.h"
+#include "engine/pipeline/config_schema.h"
 #include "test_data.h"
 
 namespace hdprior::test {
@@ -11,10 +12,10 @@ namespace {
 
 void write(const std::filesystem::path& file, const std::string& text) { std::ofstream(file) << text; }
 
-TEST(ConfigCommand, DefaultsPrintsTheEmbeddedFileWhichChecksAsValid) {
+TEST(ConfigCommand, DefaultsPrintsEveryKeyAndChecksAsValid) {
   const CommandResult r = runHdprior("config --defaults");
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, defaultConfigText());
+  EXPECT_EQ(r.out, formatConfig(defaultConfig()));
   EXPECT_EQ(formatConfig(parseConfig(r.out, "defaults")), r.out);
   const std::filesystem::path file = freshOutputDir("config_defaults") / "defaults.json";
   write(file, r.out);
@@ -32,7 +33,9 @@ TEST(ConfigCommand, CheckNamesTheFileAndTheKeyInOneLine) {
     const char* message;
   } cases[] = {
       {"unknown.json", R"({"match": {"outlier": 0.5}})", "unknown.json: unknown key match.outlier"},
-      {"range.json", R"({"match": {"outlier_ratio": 7}})", "range.json: match.outlier_ratio = 7 is out of range [0.0, 0.999]"},
+      {"range.json", R"({"match": {"outlier_ratio": 7}})", "range.json: match.outlier_ratio = 7 is out of range (0, 1)"},
+      {"stage.json", R"({"match": {"min_points": 0}})", "stage.json: match.min_points = 0 is out of range [1, 10000000]"},
+      {"dropped.json", R"({"road_points": {"submap": true}})", "dropped.json: unknown key road_points.submap"},
       {"type.json", R"({"keyframes": {"distance": "far"}})", "type.json: keyframes.distance"},
       {"broken.json", R"({"keyframes": )", "broken.json: invalid JSON"},
   };
@@ -50,10 +53,17 @@ TEST(ConfigCommand, CheckNamesTheFileAndTheKeyInOneLine) {
   EXPECT_NE(missing.err.find("none.json"), std::string::npos) << missing.err;
 }
 
-TEST(ConfigCommand, NeedsExactlyOneOfDefaultsAndCheck) {
+TEST(ConfigCommand, ReferencePrintsDocsConfigMd) {
+  const CommandResult r = runHdprior("config --reference");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, configReference());
+  EXPECT_NE(r.out.find("| `match.min_points` | `200` | [1, 10000000] |"), std::string::npos);
+}
+
+TEST(ConfigCommand, NeedsExactlyOneOfDefaultsReferenceAndCheck) {
   const CommandResult none = runHdprior("config");
   EXPECT_EQ(none.status, 2);
-  EXPECT_NE(none.err.find("give exactly one of --defaults and --check FILE"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("give exactly one of --defaults, --reference and --check FILE"), std::string::npos) << none.err;
   const CommandResult both = runHdprior("config --defaults --check x.json");
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.err.find("option --defaults: cannot be combined with --check"), std::string::npos) << both.err;

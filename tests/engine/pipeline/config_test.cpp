@@ -2,6 +2,10 @@
 
 #include "engine/error.h"
 #include "engine/pipeline/config.h"
+#include "engine/pipeline/config_schema.h"
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
 
 namespace hdprior {
 namespace {
@@ -27,73 +31,109 @@ TEST(Config, DefaultsRoundTripThroughJson) {
 }
 
 TEST(Config, ReadsNestedValuesOfEveryStage) {
-  const Config c = parseConfig(R"({"odometry": {"features": {"edge_curvature": 0.05}, "registration": {"scan_to_scan_guess": true},
+  const Config c = parseConfig(R"({"vehicle": {"ego_height": 0.4},
+                                   "odometry": {"features": {"plane_curvature": 0.05}, "registration": {"threads": 1},
                                    "deskew": {"mode": "constant_velocity"}},
                                    "keyframes": {"distance": 3.5},
-                                   "road_points": {"submap": true, "thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
+                                   "road_points": {"thin_cell": 0.2, "ground": {"seed_height": 0.3},
                                                    "road": {"max_step": 0.08}},
-                                   "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0], "lookup": "containing_cell",
-                                             "prediction_sigma": [1, 2, 0.1]},
-                                   "prior": {"ego_height": 0.4}, "graph": {"prior_huber": 2.5}})",
+                                   "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0], "prediction_sigma": [1, 2, 0.1]},
+                                   "graph": {"prior_huber": 2.5}})",
                                "c.json");
-  EXPECT_DOUBLE_EQ(c.odometry.features.edgeCurvature, 0.05);
-  EXPECT_TRUE(c.odometry.registration.scanToScanGuess);
+  EXPECT_DOUBLE_EQ(c.odometry.features.planeCurvature, 0.05);
+  EXPECT_EQ(c.odometry.registration.threads, 1);
   EXPECT_EQ(c.odometry.deskew.mode, "constant_velocity");
   EXPECT_DOUBLE_EQ(c.keyframes.distance, 3.5);
   EXPECT_DOUBLE_EQ(c.keyframes.rotationDeg, 10.0);
-  EXPECT_TRUE(c.submapRoadPoints);
   EXPECT_DOUBLE_EQ(c.roadPoints.thinCell, 0.2);
-  EXPECT_EQ(c.roadPoints.ground.zoneRings, (std::vector<int>{2, 2, 2, 2}));
+  EXPECT_DOUBLE_EQ(c.roadPoints.ground.seedHeight, 0.3);
   EXPECT_DOUBLE_EQ(c.roadPoints.road.maxStep, 0.08);
   EXPECT_EQ(c.match.backend, MatchBackend::PclNdt);
   EXPECT_EQ(c.match.cellSizes, (std::vector<double>{2.0, 1.0}));
-  EXPECT_EQ(c.match.lookup, NdtLookup::ContainingCell);
   EXPECT_EQ(c.match.predictionSigma, Eigen::Vector3d(1, 2, 0.1));
-  EXPECT_DOUBLE_EQ(c.prior.egoHeight, 0.4);
   EXPECT_DOUBLE_EQ(c.graph.priorHuber, 2.5);
   const Config back = parseConfig(formatConfig(c), "back.json");
   EXPECT_EQ(formatConfig(back), formatConfig(c));
   EXPECT_NE(formatConfig(c).find("\"backend\": \"pcl\""), std::string::npos);
 }
 
+// One key for the ego origin's height: the prior's altitude and the road level of both road-point
+// stages follow it.
+TEST(Config, OneEgoHeightSetsTheRoadLevel) {
+  const Config c = parseConfig(R"({"vehicle": {"ego_height": 1.73}})", "kitti.json");
+  EXPECT_DOUBLE_EQ(c.prior.egoHeight, 1.73);
+  EXPECT_DOUBLE_EQ(c.roadPoints.ground.groundZ, -1.73);
+  EXPECT_DOUBLE_EQ(c.roadPoints.road.groundZ, -1.73);
+  EXPECT_EQ(errorOf(R"({"road_points": {"ground": {"ground_z": -1.73}}})"), "my.json: unknown key road_points.ground.ground_z");
+  EXPECT_EQ(errorOf(R"({"prior": {"ego_height": 1.73}})"), "my.json: unknown key prior.ego_height");
+}
+
 TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
-  EXPECT_EQ(errorOf(R"({"odometry": {"features": {"edge_curvatur": 0.05}}})"), "my.json: unknown key odometry.features.edge_curvatur");
+  EXPECT_EQ(errorOf(R"({"odometry": {"features": {"plane_curvatur": 0.05}}})"), "my.json: unknown key odometry.features.plane_curvatur");
   EXPECT_EQ(errorOf(R"({"odometr": {}})"), "my.json: unknown key odometr");
-  EXPECT_EQ(errorOf(R"({"keyframes": {"distance": -1}})"), "my.json: keyframes.distance = -1 is out of range [0.0, 100000.0]");
+  EXPECT_EQ(errorOf(R"({"keyframes": {"distance": -1}})"), "my.json: keyframes.distance = -1 is out of range [0, 100000]");
   EXPECT_NE(errorOf(R"({"odometry": {"local_map": {"max_points_per_voxel": 2.5}}})").find("odometry.local_map.max_points_per_voxel is not an integer"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})").find("odometry.deskew.mode"), std::string::npos);
+  EXPECT_EQ(errorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})"), "my.json: odometry.deskew.mode must be one of none, constant_velocity");
   EXPECT_NE(errorOf(R"({"match": 3})").find("match must be a JSON object"), std::string::npos);
-  EXPECT_EQ(errorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be \"ndt2d\" or \"pcl\"");
-  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.1, 100.0]");
+  EXPECT_EQ(errorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be one of ndt2d, pcl");
+  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.1, 100]");
   EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": []}})"), "my.json: match.cell_sizes must be a non-empty array of numbers");
   EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 2.0]}})"), "my.json: match.cell_sizes must go from coarse to fine (decreasing)");
   EXPECT_EQ(errorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
-  EXPECT_EQ(errorOf(R"({"road_points": {"ground": {"zone_rings": [1, 2]}}})"),
-            "my.json: road_points.ground.zone_radii, zone_rings and zone_sectors must have the same length");
-  EXPECT_EQ(errorOf(R"({"road_points": {"road": {"lane_object_height": 0.05}}})"),
-            "my.json: road_points.road.lane_object_height must be above lane_step");
+  EXPECT_EQ(errorOf(R"({"odometry": {"features": {"min_range": 50, "max_range": 40}}})"),
+            "my.json: odometry.features.min_range must be below odometry.features.max_range");
   EXPECT_EQ(errorOf(R"({"graph": {"unknown": 1}})"), "my.json: unknown key graph.unknown");
   EXPECT_NE(errorOf("{").find("invalid JSON"), std::string::npos);
 }
 
-TEST(Config, OdometryDriftAndTheGraphsDriftModel) {
-  const Config c = parseConfig(R"({"odometry": {"drift": {"scale": 0.007, "yaw_deg_per_100m": -0.5}},
-                                   "graph": {"odometry_translation_sigma_per_m": 0.01, "odometry_rotation_sigma_deg_per_m": 0.02}})",
+// The values the engine's stages refuse are refused when the file is read, naming the file and the key.
+TEST(Config, ValuesTheStagesRefuseAreRefusedWhenRead) {
+  EXPECT_EQ(errorOf(R"({"match": {"min_points": 0}})"), "my.json: match.min_points = 0 is out of range [1, 10000000]");
+  EXPECT_EQ(errorOf(R"({"match": {"gate_chi2": 0}})"), "my.json: match.gate_chi2 = 0 is out of range (0, 1000000000]");
+  EXPECT_EQ(errorOf(R"({"match": {"degenerate_ratio": 1}})"), "my.json: match.degenerate_ratio = 1 is out of range [0, 1)");
+  EXPECT_EQ(errorOf(R"({"match": {"boundary_band": 0}})"), "my.json: match.boundary_band = 0 is out of range (0, 100]");
+  EXPECT_EQ(errorOf(R"({"match": {"stale_distance": 0}})"), "my.json: match.stale_distance = 0 is out of range (0, 1000]");
+  EXPECT_EQ(errorOf(R"({"graph": {"prior_huber": 0}})"), "my.json: graph.prior_huber = 0 is out of range (0, 1000000]");
+}
+
+// Every key rejects a value just beyond each end of its range, and a value of the wrong type, with
+// one message naming the file and the key.
+TEST(Config, EveryKeyRejectsValuesBeyondItsRangeNamingFileAndKey) {
+  for (const ConfigKey& k : configKeys()) {
+    std::string pointer = "/" + k.key;
+    for (char& c : pointer) if (c == '.') c = '/';
+    const auto fileWith = [&](const nlohmann::json& value) {
+      nlohmann::json file = nlohmann::json::object();
+      file[nlohmann::json::json_pointer(pointer)] = value;
+      return file.dump();
+    };
+    EXPECT_NE(errorOf(fileWith(nlohmann::json::object({{"x", 1}}))).find("my.json: " + k.key), std::string::npos) << k.key;
+    if (k.range.front() != '[' && k.range.front() != '(') continue;  // a choice: its names are tested above
+    char* end = nullptr;
+    const double lo = std::strtod(k.range.c_str() + 1, &end), hi = std::strtod(end + 1, &end);
+    const bool array = nlohmann::json::parse(k.defaultValue).is_array();
+    for (double beyond : {k.range.front() == '(' ? lo : lo - 1, *end == ')' ? hi : hi + 1}) {
+      const nlohmann::json value = array ? nlohmann::json::array({beyond, beyond, beyond}) : nlohmann::json(beyond);
+      const std::string error = errorOf(fileWith(value));
+      EXPECT_EQ(error.rfind("my.json: " + k.key + " ", 0), 0u) << k.key << " = " << beyond << ": " << error;
+    }
+  }
+}
+
+// The odometry drift injected for evaluation is an option of run and eval, not a key.
+TEST(Config, TheOdometryDriftIsNotAKey) {
+  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"scale": 0.007}}})"), "my.json: unknown key odometry.drift");
+  EXPECT_FALSE(Config{}.odometry.drift.active());
+}
+
+TEST(Config, TheGraphsDriftModel) {
+  const Config c = parseConfig(R"({"graph": {"odometry_translation_sigma_per_m": 0.01, "odometry_rotation_sigma_deg_per_m": 0.02}})",
                                "c.json");
-  EXPECT_DOUBLE_EQ(c.odometry.drift.scale, 0.007);
-  EXPECT_DOUBLE_EQ(c.odometry.drift.yawDegPer100m, -0.5);
-  EXPECT_DOUBLE_EQ(c.odometry.drift.pitchDegPer100m, 0.0);
   EXPECT_DOUBLE_EQ(c.graph.odometryTranslationSigmaPerM, 0.01);
   EXPECT_DOUBLE_EQ(c.graph.odometryRotationSigmaDegPerM, 0.02);
   EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
-  EXPECT_NE(formatConfig(c).find("\"yaw_deg_per_100m\": -0.5"), std::string::npos);
-  EXPECT_FALSE(Config{}.odometry.drift.active());  // no drift unless asked for
-  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"scale": 0.2}}})"), "my.json: odometry.drift.scale = 0.2 is out of range (-0.2, 0.2)");
-  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"pitch_deg_per_100m": 30}}})"),
-            "my.json: odometry.drift.pitch_deg_per_100m = 30 is out of range [-20, 20]");
-  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"roll": 1}}})"), "my.json: unknown key odometry.drift.roll");
   EXPECT_EQ(errorOf(R"({"graph": {"odometry_translation_sigma_per_m": -0.1}})"),
-            "my.json: graph.odometry_translation_sigma_per_m = -0.1 is out of range [0.0, 10.0]");
+            "my.json: graph.odometry_translation_sigma_per_m = -0.1 is out of range (0, 10]");
 }
 
 TEST(Config, GivenOdometrysDriftModel) {
@@ -106,7 +146,7 @@ TEST(Config, GivenOdometrysDriftModel) {
   EXPECT_DOUBLE_EQ(c.graph.givenOdometryRotationSigmaDegPerM, 0.002);
   EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
   EXPECT_EQ(errorOf(R"({"graph": {"given_odometry_rotation_sigma_deg_per_m": 200}})"),
-            "my.json: graph.given_odometry_rotation_sigma_deg_per_m = 200 is out of range [0.0, 180.0]");
+            "my.json: graph.given_odometry_rotation_sigma_deg_per_m = 200 is out of range (0, 180]");
 }
 
 }  // namespace hdprior

@@ -1,54 +1,61 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "engine/pipeline/config.h"
+#include "engine/pipeline/config_schema.h"
+#include "test_data.h"
 
 namespace hdprior {
-namespace {
 
-using nlohmann::json;
-
-// The keys whose values differ between two configurations' JSON, missing ones included, one a line.
-std::string differingKeys(const std::string& expected, const std::string& actual) {
-  const json a = json::parse(expected).flatten(), b = json::parse(actual).flatten();
-  std::string out;
-  for (const auto& [key, value] : a.items()) {
-    if (!b.contains(key)) out += key + ": " + value.dump() + " only in the first\n";
-    else if (b[key] != value) out += key + ": " + value.dump() + " vs " + b[key].dump() + "\n";
-  }
-  for (const auto& [key, value] : b.items()) {
-    if (!a.contains(key)) out += key + ": " + value.dump() + " only in the second\n";
-  }
-  return out;
+// The option structs' initialisers are the defaults: the built-in configuration is them, with the
+// one ego height set through (vehicle.ego_height also gives the road level of the road points).
+TEST(DefaultConfig, IsTheStructInitialisers) {
+  EXPECT_EQ(formatConfig(defaultConfig()), formatConfig(Config{}));
+  EXPECT_DOUBLE_EQ(Config{}.roadPoints.ground.groundZ, -Config{}.prior.egoHeight);
+  EXPECT_DOUBLE_EQ(Config{}.roadPoints.road.groundZ, -Config{}.prior.egoHeight);
 }
 
-}  // namespace
-
-// assets/default_config.json is the one source of the defaults: it names every key, as
-// formatConfig writes them.
-TEST(DefaultConfig, TheEmbeddedFileNamesEveryKey) {
-  const std::string text = defaultConfigText();
-  EXPECT_EQ(formatConfig(defaultConfig()), text) << "assets/default_config.json vs the keys hdprior reads:\n"
-                                                 << differingKeys(text, formatConfig(defaultConfig()));
-}
-
-// The option structs' initialisers (used where code makes an option struct without a configuration)
-// must not become a second, different set of defaults. A key added to the configuration fails here
-// until assets/default_config.json has it.
-TEST(DefaultConfig, TheStructInitialisersEqualTheFile) {
-  EXPECT_EQ(formatConfig(Config{}), defaultConfigText())
-      << "assets/default_config.json vs the option structs' initialisers (file first; change both):\n"
-      << differingKeys(defaultConfigText(), formatConfig(Config{}));
-}
-
-// A file sets its keys over the defaults of the embedded file.
 TEST(DefaultConfig, AFileOverridesOnlyItsKeys) {
   Config expected = defaultConfig();
   expected.keyframes.distance = 3.5;
   EXPECT_EQ(formatConfig(parseConfig(R"({"keyframes": {"distance": 3.5}})", "my.json")), formatConfig(expected));
-  EXPECT_EQ(formatConfig(parseConfig("{}", "empty.json")), defaultConfigText());
+  EXPECT_EQ(formatConfig(parseConfig("{}", "empty.json")), formatConfig(defaultConfig()));
+}
+
+namespace {
+
+// The dotted keys of a configuration's JSON: its leaves (an array is one leaf).
+void leafKeys(const nlohmann::json& j, const std::string& path, std::vector<std::string>& out) {
+  if (!j.is_object()) return out.push_back(path);
+  for (const auto& [key, value] : j.items()) leafKeys(value, path.empty() ? key : path + "." + key, out);
+}
+
+}  // namespace
+
+// At most 90 keys, each with a range and a description; the formatted configuration has exactly
+// the schema's keys.
+TEST(DefaultConfig, EveryKeyIsDescribedAndThereAreAtMost90) {
+  const std::vector<ConfigKey> keys = configKeys();
+  EXPECT_LE(keys.size(), 90u);
+  std::vector<std::string> formatted, schema;
+  leafKeys(nlohmann::json::parse(formatConfig(defaultConfig())), "", formatted);
+  for (const ConfigKey& k : keys) {
+    schema.push_back(k.key);
+    EXPECT_FALSE(k.description.empty()) << k.key;
+    EXPECT_FALSE(k.range.empty()) << k.key;
+  }
+  std::sort(schema.begin(), schema.end());
+  EXPECT_EQ(formatted, schema);  // nlohmann's objects keep their keys sorted
+}
+
+// docs/config.md is the reference as `hdprior config --reference` prints it.
+TEST(DefaultConfig, TheReferenceInDocsIsCurrent) {
+  EXPECT_EQ(test::readFileText(test::sourceDir() / "docs" / "config.md"), configReference())
+      << "regenerate it: build/app/hdprior config --reference > docs/config.md";
 }
 
 }  // namespace hdprior

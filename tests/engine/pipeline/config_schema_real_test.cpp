@@ -1,0 +1,102 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "engine/error.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/lidar/sweep_road_points.h"
+#include "engine/map/hd_map.h"
+#include "engine/match/map_matcher.h"
+#include "engine/odom/odometry.h"
+#include "engine/pipeline/config.h"
+#include "engine/pipeline/config_schema.h"
+#include "engine/pipeline/pipeline_run.h"
+#include "engine/pipeline/prior_stage.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace {
+
+using nlohmann::json;
+
+// The ends of a key's range as the schema states it ("(0, 1]": the least number above 0, and 1),
+// or each name a choice allows; arrays get one element (three for a vector of three).
+std::vector<json> endsOf(const ConfigKey& k) {
+  std::vector<json> values;
+  if (k.range.front() != '[' && k.range.front() != '(') {
+    for (size_t at = 0; at < k.range.size();) {
+      const size_t bar = k.range.find(" | ", at);
+      values.push_back(k.range.substr(at, bar - at));
+      at = bar == std::string::npos ? k.range.size() : bar + 3;
+    }
+    return values;
+  }
+  const json def = json::parse(k.defaultValue);
+  const bool integer = (def.is_array() ? def[0] : def).is_number_integer();
+  char* end = nullptr;
+  double lo = std::strtod(k.range.c_str() + 1, &end);
+  double hi = std::strtod(end + 1, &end);
+  if (k.range.front() == '(') lo = integer ? lo + 1 : std::nextafter(lo, hi);
+  if (*end == ')') hi = integer ? hi - 1 : std::nextafter(hi, lo);
+  for (double v : {lo, hi}) {
+    const json value = integer ? json(int64_t(v)) : json(v);
+    values.push_back(def.is_array() ? json(std::vector<json>(def.size(), value)) : value);
+  }
+  return values;
+}
+
+json fileWith(const std::string& key, const json& value) {
+  std::string pointer = "/" + key;
+  for (char& c : pointer) if (c == '.') c = '/';
+  json file = json::object();
+  file[json::json_pointer(pointer)] = value;
+  return file;
+}
+
+// What `run`, `match` and `view` make of a configuration on the real log: the map with the
+// configuration's NDT grids, the prior stage (matcher, graph, gate), the odometry over two sweeps,
+// the road points of a sweep and a match of them.
+void buildEveryStage(const ArgoverseLog& log, const Config& c) {
+  static std::vector<double> loadedSizes;
+  static std::unique_ptr<HdMap> map;
+  if (!map || loadedSizes != c.match.cellSizes) {
+    map = loadPriorMap(log, c);
+    loadedSizes = c.match.cellSizes;
+  }
+  const SE3 truth = log.cityTEgo().at(log.sweepTimestamps().front());
+  PriorStage stage(*map, c, truth);
+  Odometry odometry(c.odometry, c.keyframes);
+  odometry.registerSweep(*log.sweep(0));
+  odometry.registerSweep(*log.sweep(1));
+  const std::vector<Eigen::Vector2d> road = sweepRoadPoints(*log.sweep(0), Eigen::Matrix3d::Identity(), c.roadPoints);
+  MapMatcher matcher(*map, c.match);
+  const Eigen::Vector3d start(truth.translation().x(), truth.translation().y(),
+                              std::atan2(truth.rotation()(1, 0), truth.rotation()(0, 0)));
+  matcher.match(road, start);
+}
+
+}  // namespace
+
+// No configuration that the schema accepts fails later because of a range: every key at both ends
+// of its range (and every name of a choice) builds and runs every stage on the real log.
+TEST(ConfigSchema, EveryAcceptedValueBuildsEveryStageOnTheRealLog) {
+  const ArgoverseLog log(test::sharedLog());
+  int configurations = 0;
+  for (const ConfigKey& k : configKeys()) {
+    for (const json& value : endsOf(k)) {
+      const std::string text = fileWith(k.key, value).dump();
+      try {
+        buildEveryStage(log, parseConfig(text, "ends.json"));
+      } catch (const Error& e) {
+        ADD_FAILURE() << text << ": " << e.what();
+      }
+      ++configurations;
+    }
+  }
+  EXPECT_GE(configurations, 2 * 80);
+}
+
+}  // namespace hdprior
