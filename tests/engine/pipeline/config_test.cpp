@@ -27,7 +27,7 @@ TEST(Config, DefaultsRoundTripThroughJson) {
 }
 
 TEST(Config, ReadsNestedValuesOfEveryStage) {
-  const Config c = parseConfig(R"({"odometry": {"features": {"edge_curvature": 0.05}, "registration": {"scan_to_scan_guess": true},
+  const Config c = parseConfig(R"({"odometry": {"features": {"edge_curvature": 0.05}, "registration": {"plane_downsample": 0.6},
                                    "deskew": {"mode": "constant_velocity"}},
                                    "keyframes": {"distance": 3.5},
                                    "road_points": {"submap": true, "thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
@@ -37,7 +37,7 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
                                    "prior": {"ego_height": 0.4}, "graph": {"prior_huber": 2.5}})",
                                "c.json");
   EXPECT_DOUBLE_EQ(c.odometry.features.edgeCurvature, 0.05);
-  EXPECT_TRUE(c.odometry.registration.scanToScanGuess);
+  EXPECT_DOUBLE_EQ(c.odometry.registration.planeDownsample, 0.6);
   EXPECT_EQ(c.odometry.deskew.mode, "constant_velocity");
   EXPECT_DOUBLE_EQ(c.keyframes.distance, 3.5);
   EXPECT_DOUBLE_EQ(c.keyframes.rotationDeg, 10.0);
