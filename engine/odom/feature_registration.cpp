@@ -38,15 +38,15 @@ SE3 applyDelta(const SE3& base, const double* delta) {
   return base * d;
 }
 
-// One query's association: a line (a, u) for an edge or a plane (n, d) for a plane point.
+// One query's association: the plane n.x + d = 0 near it in the map.
 struct Association {
   bool valid = false;
-  Eigen::Vector3d a, u;
+  Eigen::Vector3d n;
   double d = 0;
 };
 
 std::vector<Association> associate(const std::vector<Eigen::Vector3f>& queries, const VoxelFeatureMap& map,
-                                   const SE3& base, bool edges, const RegistrationOptions& o) {
+                                   const SE3& base, const RegistrationOptions& o) {
   std::vector<Association> out(queries.size());
   const Eigen::Isometry3f baseF = base.cast<float>();
   const float gate = float(o.maxCorrespondence);
@@ -55,34 +55,25 @@ std::vector<Association> associate(const std::vector<Eigen::Vector3f>& queries, 
     for (size_t i = begin; i < end; ++i) {
       if (map.nearest(baseF * queries[i], kNeighbours, gate, nb) < kNeighbours) continue;
       Association& a = out[i];
-      a.valid = edges ? fitLine(nb, kNeighbours, a.a, a.u) : fitPlane(nb, kNeighbours, a.u, a.d);
+      a.valid = fitPlane(nb, kNeighbours, a.n, a.d);
     }
   });
   return out;
 }
 
-// Adds the residuals of one association round; returns (edges, planes) used.
-std::pair<int, int> addResiduals(ceres::Problem& problem, double* delta, const std::vector<Eigen::Vector3f>& edges,
-                                 const std::vector<Eigen::Vector3f>& planes, const VoxelFeatureMap& edgeMap,
-                                 const VoxelFeatureMap& planeMap, const SE3& base, const RegistrationOptions& o) {
-  int nEdges = 0, nPlanes = 0;
-  const auto lines = associate(edges, edgeMap, base, true, o);
-  for (size_t i = 0; i < edges.size(); ++i) {
-    if (!lines[i].valid) continue;
-    auto* cost = new ceres::AutoDiffCostFunction<PointToLineResidual, 3, 6>(
-        new PointToLineResidual{edges[i].cast<double>(), lines[i].a, lines[i].u, base});
-    problem.AddResidualBlock(cost, new ceres::HuberLoss(o.huberScale), delta);
-    ++nEdges;
-  }
-  const auto surfaces = associate(planes, planeMap, base, false, o);
+// Adds the residuals of one association round; returns how many.
+int addResiduals(ceres::Problem& problem, double* delta, const std::vector<Eigen::Vector3f>& planes,
+                 const VoxelFeatureMap& planeMap, const SE3& base, const RegistrationOptions& o) {
+  int count = 0;
+  const auto surfaces = associate(planes, planeMap, base, o);
   for (size_t i = 0; i < planes.size(); ++i) {
     if (!surfaces[i].valid) continue;
     auto* cost = new ceres::AutoDiffCostFunction<PointToPlaneResidual, 1, 6>(
-        new PointToPlaneResidual{planes[i].cast<double>(), surfaces[i].u, surfaces[i].d, base});
+        new PointToPlaneResidual{planes[i].cast<double>(), surfaces[i].n, surfaces[i].d, base});
     problem.AddResidualBlock(cost, new ceres::HuberLoss(o.huberScale), delta);
-    ++nPlanes;
+    ++count;
   }
-  return {nEdges, nPlanes};
+  return count;
 }
 
 Eigen::Matrix<double, 6, 6> covarianceAt(ceres::Problem& problem, int& residualCount, double& rms) {
@@ -107,14 +98,6 @@ Eigen::Matrix<double, 6, 6> covarianceAt(ceres::Problem& problem, int& residualC
 
 }  // namespace
 
-bool fitLine(const Eigen::Vector3f* pts, int count, Eigen::Vector3d& point, Eigen::Vector3d& direction) {
-  Eigen::Vector3d values;
-  Eigen::Matrix3d vectors;
-  principalAxes(pts, count, point, values, vectors);
-  direction = vectors.col(2);
-  return values[2] > 3 * values[1];
-}
-
 bool fitPlane(const Eigen::Vector3f* pts, int count, Eigen::Vector3d& normal, double& offset) {
   Eigen::Vector3d centroid, values;
   Eigen::Matrix3d vectors;
@@ -127,9 +110,8 @@ bool fitPlane(const Eigen::Vector3f* pts, int count, Eigen::Vector3d& normal, do
   return values[0] < 0.1 * values[1] && values[1] > 1e-3 * values[2];  // not a degenerate (collinear) patch
 }
 
-RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& edges, const std::vector<Eigen::Vector3f>& planes,
-                                    const VoxelFeatureMap& edgeMap, const VoxelFeatureMap& planeMap, const SE3& guess,
-                                    const RegistrationOptions& o) {
+RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& planes, const VoxelFeatureMap& planeMap,
+                                    const SE3& guess, const RegistrationOptions& o) {
   RegistrationResult result;
   result.mapTEgo = guess;
   ceres::Problem::Options problemOptions;
@@ -143,10 +125,8 @@ RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& edges, c
   for (int round = 0; round < std::max(1, o.outerIterations); ++round) {
     double delta[6] = {0, 0, 0, 0, 0, 0};
     ceres::Problem problem(problemOptions);
-    const auto [nEdges, nPlanes] = addResiduals(problem, delta, edges, planes, edgeMap, planeMap, result.mapTEgo, o);
-    result.edgeResiduals = nEdges;
-    result.planeResiduals = nPlanes;
-    if (nEdges + nPlanes < 10) return result;  // too little overlap: keep the guess, covariance stays identity
+    result.planeResiduals = addResiduals(problem, delta, planes, planeMap, result.mapTEgo, o);
+    if (result.planeResiduals < 10) return result;  // too little overlap: keep the guess, covariance stays identity
     ceres::Solver::Summary summary;
     ceres::Solve(solverOptions, &problem, &summary);
     const bool last = round + 1 == std::max(1, o.outerIterations);
@@ -160,7 +140,7 @@ RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& edges, c
       // Converged: one more round would re-associate the same pairs; take the covariance now.
       double zero[6] = {0, 0, 0, 0, 0, 0};
       ceres::Problem finalProblem(problemOptions);
-      addResiduals(finalProblem, zero, edges, planes, edgeMap, planeMap, result.mapTEgo, o);
+      addResiduals(finalProblem, zero, planes, planeMap, result.mapTEgo, o);
       int count = 0;
       result.covariance = covarianceAt(finalProblem, count, result.rmsResidual);
       break;

@@ -14,19 +14,17 @@ struct RegistrationResult {
   // Covariance of the body-frame correction [v, w] at the optimum: s^2 (J^T J)^-1 with s^2 the
   // residual variance (robust-weighted Jacobian).
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Identity();
-  int edgeResiduals = 0, planeResiduals = 0;
+  int planeResiduals = 0;
   double rmsResidual = 0;
 };
 
-// One correspondence search: the line (edges) or plane (planes) fitted to the 5 nearest map points
-// of a query point in the map frame; false when the neighbourhood is not line- or plane-like.
-bool fitLine(const Eigen::Vector3f* neighbours, int count, Eigen::Vector3d& point, Eigen::Vector3d& direction);
+// One correspondence search: the plane n.x + offset = 0 fitted to the 5 nearest map points of a
+// query point in the map frame; false when the neighbourhood is not plane-like.
 bool fitPlane(const Eigen::Vector3f* neighbours, int count, Eigen::Vector3d& normal, double& offset);
 
-// Scan-to-map registration of edge and plane query points (ego frame) against the local map with
-// point-to-line and point-to-plane residuals under a Huber loss, solved with Ceres from `guess`.
-RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& edges, const std::vector<Eigen::Vector3f>& planes,
-                                    const VoxelFeatureMap& edgeMap, const VoxelFeatureMap& planeMap, const SE3& guess,
-                                    const RegistrationOptions& options);
+// Scan-to-map registration of plane query points (ego frame) against the local map with
+// point-to-plane residuals under a Huber loss, solved with Ceres from `guess`.
+RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& planes, const VoxelFeatureMap& planeMap,
+                                    const SE3& guess, const RegistrationOptions& options);
 
 }  // namespace hdprior

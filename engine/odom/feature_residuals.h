@@ -1,6 +1,6 @@
 #pragma once
-// Point-to-line and point-to-plane residuals of scan-to-map registration, as templated functors
-// for Ceres automatic differentiation (they use Eigen only, so tests can evaluate them directly).
+// The point-to-plane residual of scan-to-map registration, as a templated functor for Ceres
+// automatic differentiation (it uses Eigen only, so tests can evaluate it directly).
 //
 // The pose is a correction delta = [v (3), w (3)] applied on the right of a fixed base pose:
 // map_T_ego = base * (Exp(w), v), so the Jacobian and the covariance are in the ego (body) frame,
@@ -32,21 +32,6 @@ Eigen::Matrix<T, 3, 1> correctedPoint(const T* delta, const Eigen::Vector3d& p, 
   const Eigen::Matrix<T, 3, 1> q = rotateByVector<T>(delta + 3, p.cast<T>().eval()) + Eigen::Matrix<T, 3, 1>(delta[0], delta[1], delta[2]);
   return base.rotation().cast<T>() * q + base.translation().cast<T>();
 }
-
-// Distance vector from the moved point to the line through `a` with unit direction `u`.
-struct PointToLineResidual {
-  Eigen::Vector3d p, a, u;
-  Eigen::Isometry3d base;
-  template <typename T>
-  bool operator()(const T* delta, T* r) const {
-    const Eigen::Matrix<T, 3, 1> d = correctedPoint(delta, p, base) - a.cast<T>();
-    const Eigen::Matrix<T, 3, 1> perp = d - u.cast<T>() * u.cast<T>().dot(d);
-    r[0] = perp[0];
-    r[1] = perp[1];
-    r[2] = perp[2];
-    return true;
-  }
-};
 
 // Signed distance from the moved point to the plane n.x + d = 0 (n unit).
 struct PointToPlaneResidual {

@@ -34,10 +34,7 @@ std::vector<Eigen::Vector3f> transformed(const std::vector<Eigen::Vector3f>& poi
 Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyframes, PoseTrajectory given)
     : options_(options),
       keyframeOptions_(keyframes),
-      edgeMap_(options.localMap),
-      planeMap_(options.localMap),
-      lastEdges_(options.localMap),
-      lastPlanes_(options.localMap),
+      localMap_(options.localMap),
       given_(std::move(given)) {
   if (options_.deskew.mode != "none" && options_.deskew.mode != "constant_velocity") {
     throw Error("odometry.deskew.mode", "must be \"none\" or \"constant_velocity\", not \"" + options_.deskew.mode + "\"");
@@ -82,50 +79,34 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
   OdometryFrame frame;
   frame.timestampNs = sweep.timestampNs;
   frame.sweepMotion = predictedMotion(sweep.timestampNs, frame.periodNs);
-  auto featuresFor = [&](const SE3& motion, std::vector<Eigen::Vector3f>& edges, std::vector<Eigen::Vector3f>& planes) {
+  auto planesFor = [&](const SE3& motion) {
     const auto points = deskew ? deskewSweep(sweep.points, motion, frame.periodNs) : sweepPositions(sweep.points);
     const FeatureCloud cloud = extractFeatures(points, sweep.points, options_.features, ro.threads);
-    edges = voxelDownsample(cloud.lessSharp, float(ro.edgeDownsample));
-    planes = voxelDownsample(cloud.lessFlat, float(ro.planeDownsample));
+    return voxelDownsample(cloud.lessFlat, float(ro.planeDownsample));
   };
-  std::vector<Eigen::Vector3f> edges, planes;
-  featuresFor(frame.sweepMotion, edges, planes);
+  std::vector<Eigen::Vector3f> planes = planesFor(frame.sweepMotion);
   SE3 registered = SE3::Identity();
 
   if (!frames_.empty()) {
     const SE3& previous = registered_.back();
     const double sinceLast = double(sweep.timestampNs - frames_.back().timestampNs);
-    SE3 guess = previous * scaleMotion(frame.sweepMotion, sinceLast / frame.periodNs);
-    if (ro.scanToScanGuess && !lastEdges_.empty()) {
-      guess = registerFeatures(edges, planes, lastEdges_, lastPlanes_, guess, ro).mapTEgo;
-    }
-    RegistrationResult r = registerFeatures(edges, planes, edgeMap_, planeMap_, guess, startRegistration(ro, frames_.size()));
+    const SE3 guess = previous * scaleMotion(frame.sweepMotion, sinceLast / frame.periodNs);
+    RegistrationResult r = registerFeatures(planes, localMap_, guess, startRegistration(ro, frames_.size()));
     if (deskew) {
       // Re-deskew with the estimated motion and refine once from the estimate.
       frame.sweepMotion = scaleMotion(previous.inverse() * r.mapTEgo, frame.periodNs / sinceLast);
-      featuresFor(frame.sweepMotion, edges, planes);
+      planes = planesFor(frame.sweepMotion);
       RegistrationOptions refine = ro;
       refine.outerIterations = 1;
-      r = registerFeatures(edges, planes, edgeMap_, planeMap_, r.mapTEgo, refine);
+      r = registerFeatures(planes, localMap_, r.mapTEgo, refine);
     }
     registered = r.mapTEgo;
     frame.covariance = r.covariance;
-    frame.edgeResiduals = r.edgeResiduals;
     frame.planeResiduals = r.planeResiduals;
   }
 
-  const auto edgesInMap = transformed(edges, registered), planesInMap = transformed(planes, registered);
-  edgeMap_.add(edgesInMap);
-  planeMap_.add(planesInMap);
-  const Eigen::Vector3f centre = registered.translation().cast<float>();
-  edgeMap_.removeFarFrom(centre);
-  planeMap_.removeFarFrom(centre);
-  if (ro.scanToScanGuess) {
-    lastEdges_ = VoxelFeatureMap(options_.localMap);
-    lastPlanes_ = VoxelFeatureMap(options_.localMap);
-    lastEdges_.add(edgesInMap);
-    lastPlanes_.add(planesInMap);
-  }
+  localMap_.add(transformed(planes, registered));
+  localMap_.removeFarFrom(registered.translation().cast<float>());
   return addFrame(frame, registered);
 }
 

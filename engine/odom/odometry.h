@@ -21,11 +21,11 @@ struct OdometryFrame {
   SE3 sweepMotion = SE3::Identity();     // ego(t)_T_ego(t + period) used to deskew this sweep
   double periodNs = 1e8;
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();  // scan-to-map, body [v, w]
-  int edgeResiduals = 0, planeResiduals = 0;
+  int planeResiduals = 0;                // point-to-plane residuals of the final registration round
 };
 
-// LOAM-style lidar odometry: deskew, features per ring, scan-to-map registration against a bounded
-// local map, keyframes. Feed sweeps in time order. With options.drift the reported poses (frames,
+// LOAM-style lidar odometry: deskew, plane features per ring, scan-to-map registration against a
+// bounded local map of plane points, keyframes. Feed sweeps in time order. With options.drift the reported poses (frames,
 // keyframes) carry that drift; the registration and its local map keep the undegraded estimate.
 // With `given` poses (odom_T_ego at every sweep timestamp: a trajectory from another system, see
 // given_odometry.h) nothing is registered: each sweep takes its given pose, with no covariance, and
@@ -40,8 +40,8 @@ class Odometry {
   const std::vector<Keyframe>& keyframes() const { return keyframes_; }
   // The sweep's points in its ego frame at the sweep timestamp, deskewed as the estimate says.
   std::vector<Eigen::Vector3f> deskewed(const LidarSweep& sweep, size_t frame) const;
-  size_t localMapPoints() const { return edgeMap_.pointCount() + planeMap_.pointCount(); }
-  size_t localMapVoxels() const { return edgeMap_.voxelCount() + planeMap_.voxelCount(); }
+  size_t localMapPoints() const { return localMap_.pointCount(); }
+  size_t localMapVoxels() const { return localMap_.voxelCount(); }
   bool givenPoses() const { return !given_.empty(); }
 
  private:
@@ -53,8 +53,7 @@ class Odometry {
 
   OdometryOptions options_;
   KeyframeOptions keyframeOptions_;
-  VoxelFeatureMap edgeMap_, planeMap_;
-  VoxelFeatureMap lastEdges_, lastPlanes_;  // the previous scan, for the optional scan-to-scan guess
+  VoxelFeatureMap localMap_;
   std::vector<OdometryFrame> frames_;
   std::vector<SE3> registered_;  // odom_T_ego of every frame as registered (frames_ carry the drift, if any)
   std::vector<Keyframe> keyframes_;

@@ -10,13 +10,10 @@ namespace hdprior {
 struct FeatureOptions {
   int neighbours = 5;               // k
   int sectors = 6;                  // per ring, each picks its own features
-  // Edges are off by default: their registration shortens every step (silhouettes of poles and trees
-  // move with the viewpoint), and planes alone give the lower ATE
-  // (docs/experiments/2026-12-02-planes-only-odometry.md). LOAM's values: 2 and 20.
-  int sharpPerSector = 0;           // edges used as LOAM's "sharp" set
-  int lessSharpPerSector = 0;       // edges kept for the map ("less sharp")
   int flatPerSector = 4;            // planes ("flat")
-  double edgeCurvature = 0.005;     // c above this may be an edge (a 90 deg corner at 0.2 deg steps: ~0.01)
+  // c at or above this marks a corner or an edge (a 90 deg corner at 0.2 deg steps: ~0.01): such a
+  // point is never a plane point ("less flat"). Edges themselves are not registered.
+  double edgeCurvature = 0.005;
   double planeCurvature = 0.0025;   // c below this may be a plane
   double minRange = 2.0;            // metres; nearer returns hit the vehicle
   double maxRange = 120.0;
@@ -39,13 +36,11 @@ struct RegistrationOptions {
   int solverIterations = 6;         // Ceres iterations per round
   double huberScale = 0.1;          // metres, robust loss
   double maxCorrespondence = 1.0;   // metres, nearest-neighbour gate
-  double edgeDownsample = 0.5;      // voxel size for the scan's edge queries
   double planeDownsample = 0.8;     // voxel size for the scan's plane queries
-  bool scanToScanGuess = false;     // seed with a scan-to-scan registration before scan-to-map
   int threads = 2;                  // correspondence search and feature extraction
 };
 
-// The local map: features in a voxel hash, bounded by a radius around the vehicle and a point cap per voxel.
+// The local map: plane points in a voxel hash, bounded by a radius around the vehicle and a point cap per voxel.
 struct LocalMapOptions {
   double voxelSize = 1.0;
   int maxPointsPerVoxel = 10;

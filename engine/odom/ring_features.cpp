@@ -88,16 +88,8 @@ std::vector<FeatureLabel> labelRing(const std::vector<RingPoint>& ring, const Fe
     const int begin = k + (n - 2 * k) * s / sectors, end = k + (n - 2 * k) * (s + 1) / sectors;
     order.resize(end - begin);
     std::iota(order.begin(), order.end(), begin);
+    // Most curved first (ties by index); the flats are taken from the other end.
     std::sort(order.begin(), order.end(), [&](int a, int b) { return curvature[a] > curvature[b] || (curvature[a] == curvature[b] && a < b); });
-    int edges = 0;
-    for (int i : order) {
-      if (curvature[i] <= o.edgeCurvature) break;
-      if (picked[i]) continue;
-      ++edges;
-      if (edges > o.lessSharpPerSector) break;
-      labels[i] = edges <= o.sharpPerSector ? FeatureLabel::Sharp : FeatureLabel::LessSharp;
-      suppressNeighbours(ring, i, k, picked);
-    }
     int planes = 0;
     for (auto it = order.rbegin(); it != order.rend() && planes < o.flatPerSector; ++it) {
       const int i = *it;
@@ -143,8 +135,6 @@ FeatureCloud extractFeatures(const std::vector<Eigen::Vector3f>& points, const s
     for (size_t j = 0; j < ringPoints[r].size(); ++j) {
       const Eigen::Vector3f& p = ringPoints[r][j].p;
       switch (labels[r][j]) {
-        case FeatureLabel::Sharp: cloud.sharp.push_back(p); [[fallthrough]];
-        case FeatureLabel::LessSharp: cloud.lessSharp.push_back(p); break;
         case FeatureLabel::Flat: cloud.flat.push_back(p); [[fallthrough]];
         case FeatureLabel::LessFlat: cloud.lessFlat.push_back(p); break;
         case FeatureLabel::None: break;

@@ -9,12 +9,13 @@
 
 namespace hdprior {
 
-enum class FeatureLabel : uint8_t { None, Sharp, LessSharp, Flat, LessFlat };
+enum class FeatureLabel : uint8_t { None, Flat, LessFlat };
 
-// The LOAM features of one sweep, in the sweep's ego frame. Sharp is a subset of lessSharp and
-// flat of lessFlat (LOAM's nesting). lessFlat holds every non-edge, non-rejected point.
+// The LOAM plane features of one sweep, in the sweep's ego frame. flat is a subset of lessFlat
+// (LOAM's nesting); lessFlat holds every non-rejected point whose curvature is below
+// FeatureOptions::edgeCurvature.
 struct FeatureCloud {
-  std::vector<Eigen::Vector3f> sharp, lessSharp, flat, lessFlat;
+  std::vector<Eigen::Vector3f> flat, lessFlat;
 };
 
 // One ring's points in scan order, as the extractor sees them.
@@ -24,8 +25,9 @@ struct RingPoint {
 };
 
 // Labels each point of one ring (in scan order) by curvature, after rejecting points near occlusion
-// edges, points whose beam grazes the surface, out-of-range points and ring gaps; neighbours of a
-// picked feature are suppressed.
+// edges, points whose beam grazes the surface, out-of-range points and ring gaps: up to
+// flatPerSector of each sector's flattest points below planeCurvature are Flat (the neighbours of
+// each are suppressed), every other point below edgeCurvature is LessFlat.
 std::vector<FeatureLabel> labelRing(const std::vector<RingPoint>& ring, const FeatureOptions& options);
 
 // Splits a sweep into rings by laser_number, orders each ring by offset_ns (scan order; on the real

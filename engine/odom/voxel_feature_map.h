@@ -25,7 +25,7 @@ inline VoxelKey voxelOf(const Eigen::Vector3f& p, float size) {
 // Keeps one point per voxel of `size` (the first one met), in input order.
 std::vector<Eigen::Vector3f> voxelDownsample(const std::vector<Eigen::Vector3f>& points, float size);
 
-// Local map of one feature kind (edges or planes) in the odometry frame: a voxel hash with a cap
+// The odometry's local map of plane points in the odometry frame: a voxel hash with a cap
 // per voxel and a radius around the vehicle, so its size does not grow with the drive.
 class VoxelFeatureMap {
  public:

@@ -50,20 +50,6 @@ TEST(FeatureResiduals, PointToPlaneIsTheSignedDistance) {
   expectJacobianMatchesNumeric<PointToPlaneResidual, 1>(f);
 }
 
-TEST(FeatureResiduals, PointToLineIsThePerpendicularOffset) {
-  const SE3 base = somePose();
-  const Eigen::Vector3d p(2, 1, -0.5), a(0, 0, 1);
-  const Eigen::Vector3d u = Eigen::Vector3d(0, 0, 1);
-  const PointToLineResidual f{p, a, u, base};
-  const double zero[6] = {0, 0, 0, 0, 0, 0};
-  double r[3];
-  f(zero, r);
-  const Eigen::Vector3d q = base * p;
-  EXPECT_NEAR(Eigen::Vector3d(r[0], r[1], r[2]).norm(), q.head<2>().norm(), 1e-12);
-  EXPECT_NEAR(r[2], 0.0, 1e-12);
-  expectJacobianMatchesNumeric<PointToLineResidual, 3>(f);
-}
-
 TEST(FeatureResiduals, RotationVectorMatchesAngleAxis) {
   const double w[3] = {0.1, -0.2, 0.3};
   const Eigen::Vector3d p(1, 2, 3);
@@ -71,23 +57,18 @@ TEST(FeatureResiduals, RotationVectorMatchesAngleAxis) {
   EXPECT_TRUE(rotateByVector<double>(w, p).isApprox(expected, 1e-12));
 }
 
-TEST(FeatureFits, LineAndPlaneFromNeighbours) {
-  Eigen::Vector3f line[5], plane[5], blob[5];
+TEST(FeatureFits, PlaneFromNeighbours) {
+  Eigen::Vector3f line[5], plane[5];
   for (int i = 0; i < 5; ++i) {
     line[i] = Eigen::Vector3f(1, 2, 0.3f * i);
     plane[i] = Eigen::Vector3f(0.3f * i, 0.7f * (i % 2), 4.f);
-    blob[i] = Eigen::Vector3f(0.1f * (i % 2), 0.1f * (i / 2 % 2), 0.1f * (i / 4));
   }
-  Eigen::Vector3d a, u, n;
+  Eigen::Vector3d n;
   double d;
-  ASSERT_TRUE(fitLine(line, 5, a, u));
-  EXPECT_NEAR(std::abs(u.z()), 1.0, 1e-9);
   ASSERT_TRUE(fitPlane(plane, 5, n, d));
   EXPECT_NEAR(std::abs(n.z()), 1.0, 1e-9);
   EXPECT_NEAR(std::abs(d), 4.0, 1e-6);
-  EXPECT_FALSE(fitPlane(line, 5, n, d));
-  EXPECT_FALSE(fitLine(plane, 5, a, u));
-  EXPECT_FALSE(fitLine(blob, 5, a, u));
+  EXPECT_FALSE(fitPlane(line, 5, n, d));  // collinear: no plane
 }
 
 }  // namespace hdprior
