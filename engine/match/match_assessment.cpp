@@ -94,11 +94,7 @@ double predictionChi2(const Eigen::Vector3d& initial, const Eigen::Vector3d& est
 
 void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> points,
                  const MatchOptions& o, bool timedOut, MatchResult& r) {
-  // The Laplace information is that of the Gaussian terms: the bilinear weights' own curvature (the
-  // ripple between cell centres) is not information about the pose, so they are judged unweighted.
-  const NdtLookup lookup = o.lookup == NdtLookup::Bilinear ? NdtLookup::FourNearest : o.lookup;
-  const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = lookup};
-  const NdtScore s = scoreNdt(grid, points, r.estimate, params);
+  const NdtScore s = scoreNdt(grid, points, r.estimate, {.outlierRatio = o.outlierRatio});
   r.score = s.score;
   r.scorePerPoint = points.empty() ? 0.0 : s.score / double(points.size());
   size_t distinctCells = 0;

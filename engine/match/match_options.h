@@ -3,8 +3,6 @@
 
 #include <Eigen/Core>
 
-#include "engine/map/ndt_score.h"
-
 namespace hdprior {
 
 enum class MatchBackend { Ndt2d, PclNdt };
@@ -14,11 +12,10 @@ enum class MatchBackend { Ndt2d, PclNdt };
 struct MatchOptions {
   MatchBackend backend = MatchBackend::Ndt2d;
 
-  // --- 2-D NDT (Ndt2d) ---
+  // --- 2-D NDT (Ndt2d): each point is scored against the 2 x 2 cells nearest to it ---
   // Coarse to fine; the map must carry an NDT grid of each size (HdMapOptions::ndtCellSizes).
   std::vector<double> cellSizes = {4.0, 2.0, 1.0};
   double outlierRatio = 0.55;
-  NdtLookup lookup = NdtLookup::FourNearest;
   int maxIterations = 25;               // Newton iterations per level
   int maxCoarseStride = 4;              // coarse levels use every (size / finest)^2-th point, at most this (1: all)
   double maxStepCells = 0.5;            // a step moves at most this many cells ...

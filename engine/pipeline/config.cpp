@@ -120,7 +120,6 @@ Sections sectionsOf(Config& c) {
        {{"backend", choice(&mt.backend, {"ndt2d", "pcl"})},
         {"cell_sizes", &mt.cellSizes, 0.1, 100},
         {"outlier_ratio", &mt.outlierRatio, 0, 0.999},
-        {"lookup", choice(&mt.lookup, {"containing_cell", "four_nearest", "bilinear"})},
         {"max_iterations", &mt.maxIterations, 1, 1000},
         {"max_coarse_stride", &mt.maxCoarseStride, 1, 1000},
         {"max_step_gain", &mt.maxStepGain, 1, 100},

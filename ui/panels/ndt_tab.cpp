@@ -58,11 +58,9 @@ bool drawCellSizes(AppState& state) {
 bool drawMatcher(AppState& state) {
   MatchOptions& m = state.bench().config.match;
   bool changed = drawCellSizes(state);
-  int backend = int(m.backend), lookup = int(m.lookup);
+  int backend = int(m.backend);
   const char* backends[] = {"ndt2d", "pcl"};
-  const char* lookups[] = {"containing cell", "four nearest", "bilinear"};
   if (ImGui::Combo("backend", &backend, backends, 2)) m.backend = MatchBackend(backend), changed = true;
-  if (ImGui::Combo("cell lookup", &lookup, lookups, 3)) m.lookup = NdtLookup(lookup), changed = true;
   changed |= slider("outlier ratio", m.outlierRatio, 0.05, 0.95);
   changed |= sliderInt("iterations", m.maxIterations, 1, 100);
   changed |= slider("step (cells)", m.maxStepCells, 0.05, 2.0);

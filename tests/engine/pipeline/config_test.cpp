@@ -32,7 +32,7 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
                                    "keyframes": {"distance": 3.5},
                                    "road_points": {"submap": true, "thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
                                                    "road": {"max_step": 0.08}},
-                                   "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0], "lookup": "containing_cell",
+                                   "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0],
                                              "prediction_sigma": [1, 2, 0.1]},
                                    "prior": {"ego_height": 0.4}, "graph": {"prior_huber": 2.5}})",
                                "c.json");
@@ -47,7 +47,6 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
   EXPECT_DOUBLE_EQ(c.roadPoints.road.maxStep, 0.08);
   EXPECT_EQ(c.match.backend, MatchBackend::PclNdt);
   EXPECT_EQ(c.match.cellSizes, (std::vector<double>{2.0, 1.0}));
-  EXPECT_EQ(c.match.lookup, NdtLookup::ContainingCell);
   EXPECT_EQ(c.match.predictionSigma, Eigen::Vector3d(1, 2, 0.1));
   EXPECT_DOUBLE_EQ(c.prior.egoHeight, 0.4);
   EXPECT_DOUBLE_EQ(c.graph.priorHuber, 2.5);
@@ -58,6 +57,7 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
 
 TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
   EXPECT_EQ(errorOf(R"({"odometry": {"features": {"edge_curvatur": 0.05}}})"), "my.json: unknown key odometry.features.edge_curvatur");
+  EXPECT_EQ(errorOf(R"({"match": {"lookup": "bilinear"}})"), "my.json: unknown key match.lookup");
   EXPECT_EQ(errorOf(R"({"odometr": {}})"), "my.json: unknown key odometr");
   EXPECT_EQ(errorOf(R"({"keyframes": {"distance": -1}})"), "my.json: keyframes.distance = -1 is out of range [0.0, 100000.0]");
   EXPECT_NE(errorOf(R"({"odometry": {"local_map": {"max_points_per_voxel": 2.5}}})").find("odometry.local_map.max_points_per_voxel is not an integer"), std::string::npos);
