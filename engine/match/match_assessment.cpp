@@ -104,7 +104,7 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
   // -H / (|d1| d2) is the Gauss-Newton information J^T Omega J of the points as Gaussians.
   const NdtGaussConstants k = ndtGaussConstants(o.outlierRatio, grid.cellSize());
   Eigen::Matrix3d info = -s.hessian / (std::abs(k.d1) * k.d2);
-  if (o.perCellInformation && s.matched > 0) info *= double(distinctCells) / double(s.matched);
+  if (s.matched > 0) info *= double(distinctCells) / double(s.matched);
   const Eigen::Vector3d d(1.0, 1.0, o.yawLength);
   const auto toScaled = [&](const Eigen::Matrix3d& m) {
     const Eigen::Matrix3d t = d.cwiseInverse().asDiagonal() * m * d.cwiseInverse().asDiagonal();
@@ -147,8 +147,6 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
     reject(r, "time over the budget of " + figure(o.timeBudgetMs) + " ms");
   } else if (r.inlierRatio < o.minInlierRatio) {
     reject(r, "inlier ratio " + figure(r.inlierRatio) + " < " + figure(o.minInlierRatio));
-  } else if (r.scorePerPoint < o.minScorePerPoint) {
-    reject(r, "score per point " + figure(r.scorePerPoint) + " < " + figure(o.minScorePerPoint));
   } else if (r.observableDirections == 0) {
     reject(r, "no observable direction");
   } else if (r.gateChi2 > o.gateChi2) {

@@ -72,13 +72,11 @@ std::vector<Case> thinnedTo(const std::vector<Case>& cases, size_t count) {
   return out;
 }
 
-void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncertainty = true, size_t pointCap = 0) {
+void runMatches(benchmark::State& state, MatchBackend backend, size_t pointCap = 0) {
   const Fixture& f = fixture();
   const std::vector<Case> cases = pointCap > 0 ? thinnedTo(f.cases, pointCap) : f.cases;
   MatchOptions o;
   o.backend = backend;
-  o.evidenceUncertainty = honestUncertainty;
-  o.staleRegions = honestUncertainty;
   o.timeBudgetMs = 1e6;  // measure the full match, never cut it
   MapMatcher matcher(*f.map, o);
   size_t i = 0, n = 0, ok = 0;
@@ -100,12 +98,11 @@ void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncert
   state.counters["points"] = double(cases.front().points.size());
 }
 
-// Argument: the default (1: stale regions and the evidence's uncertainty) or the matcher before them (0).
-void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, state.range(0) == 1); }
-BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90)->Arg(1)->Arg(0);
+void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d); }
+BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90);
 
 // The default matcher on the same starts with 3,500 road points a sweep: the speed target.
-void BM_MatchNdt2dAt3500(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, true, 3500); }
+void BM_MatchNdt2dAt3500(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, 3500); }
 BENCHMARK(BM_MatchNdt2dAt3500)->Unit(benchmark::kMillisecond)->Iterations(90);
 
 void BM_MatchPclNdt(benchmark::State& state) { runMatches(state, MatchBackend::PclNdt); }

@@ -68,13 +68,8 @@ bool drawMatcher(AppState& state) {
   changed |= slider("max step gain", m.maxStepGain, 1.0, 16.0, "%.1f");
   changed |= sliderInt("coarse stride", m.maxCoarseStride, 1, 16);
   changed |= slider("time budget (ms)", m.timeBudgetMs, 1.0, 500.0, "%.0f");
-  changed |= ImGui::Checkbox("curb refinement", &m.curbRefinement);
-  if (m.curbRefinement) {
-    ImGui::SameLine();
-    changed |= ImGui::Checkbox("lateral only", &m.curbLateralOnly);
-    changed |= slider("curb huber (m)", m.curbHuber, 0.01, 1.0);
-    changed |= slider("curb max dist (m)", m.curbMaxDistance, 0.1, 3.0);
-  }
+  changed |= slider("curb huber (m)", m.curbHuber, 0.01, 1.0);
+  changed |= slider("curb max dist (m)", m.curbMaxDistance, 0.1, 3.0);
   return changed;
 }
 
