@@ -20,7 +20,7 @@ namespace hdprior {
 //   "odometry": {"features": {...}, "deskew": {"mode": "none"}, "registration": {...}, "local_map": {...},
 //                "drift": {"scale": 0, "yaw_deg_per_100m": 0, "pitch_deg_per_100m": 0}},
 //   "keyframes": {"distance": 2.0, "rotation_deg": 10.0},
-//   "road_points": {"ground": {...}, "road": {...}, "thin_cell": 0.1, "submap": false},
+//   "road_points": {"ground": {...}, "road": {...}, "thin_cell": 0.1},
 //   "match": {"backend": "ndt2d", "cell_sizes": [4, 2, 1], ...},
 //   "prior": {"ego_height": 0.32, "altitude_sigma": 0.1},
 //   "graph": {"prior_huber": 1.0, ..., "odometry_translation_sigma_per_m": ..., "odometry_rotation_sigma_deg_per_m": ...},
@@ -30,7 +30,6 @@ struct Config {
   OdometryOptions odometry;
   KeyframeOptions keyframes;
   SweepRoadPointOptions roadPoints;
-  bool submapRoadPoints = false;  // match the key-frame sub-map's road points, not the keyframe sweep's alone
   MatchOptions match;
   PosePriorOptions prior;
   PoseGraphOptions graph;

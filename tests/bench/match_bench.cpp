@@ -46,8 +46,7 @@ const Fixture& fixture() {
       const SE3 truth3 = f.log->cityTEgo().at(f.log->sweepTimestamps()[s]);
       const Eigen::Vector3d truth = planarPose(truth3);
       const auto sweep = f.log->sweep(s);
-      const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
-      const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
+      const PlanarRoadPoints points = sweepRoadPoints(*sweep, levelRotation(truth3), SweepRoadPointOptions{});
       for (double lateral : {-1.5, 0.0, 1.5}) {
         for (double yawDeg : {-3.0, 0.0, 3.0}) {
           f.cases.push_back({points.road, points.curb, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDeg})});
@@ -108,17 +107,15 @@ BENCHMARK(BM_MatchNdt2dAt3500)->Unit(benchmark::kMillisecond)->Iterations(90);
 void BM_MatchPclNdt(benchmark::State& state) { runMatches(state, MatchBackend::PclNdt); }
 BENCHMARK(BM_MatchPclNdt)->Unit(benchmark::kMillisecond)->Iterations(18);
 
-// Argument: lane seeds on (1, the default) or off (0, every level seed).
 void BM_SweepRoadPoints(benchmark::State& state) {
   const Fixture& f = fixture();
   const auto sweep = f.log->sweep(0);
   const Eigen::Matrix3d level = levelRotation(f.log->cityTEgo().at(f.log->sweepTimestamps()[0]));
   SweepRoadPointOptions options;
-  options.road.laneSeeds = state.range(0) != 0;
-  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level, options).size());
+  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level, options).road.size());
   state.counters["sweep_points"] = double(sweep->points.size());
 }
-BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(0);
+BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond);
 
 // The tuning bench's cost landscape: 61 x 61 (x, y) offsets every 0.1 m and 41 yaw offsets, the
 // first sweep's road points on the finest grid around the ground truth.

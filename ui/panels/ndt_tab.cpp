@@ -95,14 +95,10 @@ bool drawRoadPoints(AppState& state) {
   changed |= slider("curb step (m)", r.road.maxStep, 0.01, 0.3, "%.3f");
   changed |= slider("step per metre", r.road.stepPerMetre, 0.0, 0.05, "%.3f");
   changed |= slider("max gap (m)", r.road.maxGap, 0.5, 20.0, "%.1f");
-  changed |= ImGui::Checkbox("lane seeds (end at a kerb across the road)", &r.road.laneSeeds);
-  if (r.road.laneSeeds) {
-    changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
-    changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
-  }
+  changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
+  changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
   changed |= slider("ground plane dist (m)", r.ground.planeDistance, 0.02, 0.5, "%.2f");
   changed |= slider("ground max tilt (deg)", r.ground.maxTiltDeg, 2.0, 45.0, "%.0f");
-  changed |= ImGui::Checkbox("key-frame sub-map (next run)", &state.bench().config.submapRoadPoints);
   return changed;
 }
 

@@ -30,7 +30,7 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
   const Config c = parseConfig(R"({"odometry": {"features": {"edge_curvature": 0.05}, "registration": {"scan_to_scan_guess": true},
                                    "deskew": {"mode": "constant_velocity"}},
                                    "keyframes": {"distance": 3.5},
-                                   "road_points": {"submap": true, "thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
+                                   "road_points": {"thin_cell": 0.2, "ground": {"zone_rings": [2, 2, 2, 2]},
                                                    "road": {"max_step": 0.08}},
                                    "match": {"backend": "pcl", "cell_sizes": [2.0, 1.0],
                                              "prediction_sigma": [1, 2, 0.1]},
@@ -41,7 +41,6 @@ TEST(Config, ReadsNestedValuesOfEveryStage) {
   EXPECT_EQ(c.odometry.deskew.mode, "constant_velocity");
   EXPECT_DOUBLE_EQ(c.keyframes.distance, 3.5);
   EXPECT_DOUBLE_EQ(c.keyframes.rotationDeg, 10.0);
-  EXPECT_TRUE(c.submapRoadPoints);
   EXPECT_DOUBLE_EQ(c.roadPoints.thinCell, 0.2);
   EXPECT_EQ(c.roadPoints.ground.zoneRings, (std::vector<int>{2, 2, 2, 2}));
   EXPECT_DOUBLE_EQ(c.roadPoints.road.maxStep, 0.08);
