@@ -99,8 +99,7 @@ int runMatch(const MatchArguments& a) {
   const SE3 truth3 = log.cityTEgo().at(stamp);
   const Eigen::Vector3d truth = planarPose(truth3);
   const auto sweep = log.sweep(size_t(frame));
-  const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
-  const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), config.roadPoints);
+  const PlanarRoadPoints points = sweepRoadPoints(*sweep, levelRotation(truth3), config.roadPoints);
   const Eigen::Vector3d initial = offsetPose(truth, offset);
   MapMatcher matcher(map, options);
   const MatchResult r = matcher.match(points.road, initial, points.curb);

@@ -274,11 +274,11 @@ class LaneProfile {
 };
 
 // The seeds: ground points in the vehicle's lane (within seedHalfWidth of its x axis) at road
-// level (groundZ, within the seed tolerance). With laneSeeds, only as far as the lane goes: its
-// points are walked outwards ahead and behind in order of |x| along the lane's height profile, and
-// the lane ends at the first rise of more than laneStep above it that persists for laneEndLength (a kerb across the
-// road at a T-junction), so the rings are not walked from a sidewalk beyond it; points below the
-// profile (gutters, crowns) are only skipped.
+// level (groundZ, within the seed tolerance), only as far as the lane goes: its points are walked
+// outwards ahead and behind in order of |x| along the lane's height profile, and the lane ends at the
+// first rise of more than laneStep above it that persists for laneEndLength (a kerb across the road
+// at a T-junction), so the rings are not walked from a sidewalk beyond it; points below the profile
+// (gutters, crowns) are only skipped.
 std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::span<const uint8_t> ground,
                                const RoadPointOptions& o) {
   std::vector<uint8_t> seeds(points.size(), 0);
@@ -302,10 +302,6 @@ std::vector<uint8_t> laneSeeds(std::span<const Eigen::Vector3d> points, std::spa
       const Eigen::Vector3d& p = points[i];
       const double ax = std::abs(p.x());
       const bool level = std::abs(p.z() - o.groundZ) < o.seedTolerance + o.seedTolerancePerMetre * p.head<2>().norm();
-      if (!o.laneSeeds) {
-        seeds[i] = level;
-        continue;
-      }
       const double pred = started ? profile.predict(ax) : 0.0;
       // Grown with the gap to the last lane point, but not along a run above the lane (a sidewalk).
       const double tolerance = o.laneStep + o.stepPerMetre * ((riseFrom >= 0.0 ? riseFrom : ax) - lastX);

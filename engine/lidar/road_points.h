@@ -10,7 +10,7 @@ namespace hdprior {
 // Road-point extraction: of the ground points, the road surface the vehicle drives on,
 // separated from sidewalks and verges at the curbs. Each laser ring is walked along its
 // azimuth, over ground points only, from seeds ahead of and behind the vehicle in its lane at
-// road level (laneSeeds: as far as the lane goes), outwards in both directions; the walk stops
+// road level (only as far as the lane goes), outwards in both directions; the walk stops
 // where the height differs by more than a step from any road point of the walk just before it (a
 // curb: about 0.15 m) or the gap along the ring grows too long. Non-ground returns (cars, pedestrians) are stepped over, so the
 // walk continues on the road behind an occluder but not onto a raised sidewalk.
@@ -35,9 +35,8 @@ struct RoadPointOptions {
   double seedHalfWidth = 1.0;
   double seedTolerance = 0.12;     // ... within this of groundZ ...
   double seedTolerancePerMetre = 0.01;  // ... plus this much per metre of range
-  // Seeds only as far along the lane as its height profile goes on without a kerb up (off: every
-  // seed at road level, also beyond a T-junction's far kerb; docs/experiments/2026-12-01-lane-seeds.md).
-  bool laneSeeds = true;
+  // Seeds only as far along the lane as its height profile goes on without a kerb up (not beyond a
+  // T-junction's far kerb, from where whole rings would be walked on the sidewalk):
   double laneStep = 0.08;          // a rise this far above the lane's height profile ends the lane (kerbs: 0.10-0.20 m)
   double gradeLength = 10.0;       // metres of lane behind a point that give the road's grade there
   double laneObjectHeight = 0.35;  // a lane point higher than this above the profile is an object, not a kerb

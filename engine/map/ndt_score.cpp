@@ -20,84 +20,6 @@ struct Accumulator {
   size_t matched = 0;
 };
 
-// One point-to-cell term and its derivatives (Magnusson 2009, eqs. 6.12-6.13, specialised to SE(2)).
-// (a, b) is R(yaw) p, so dq/dx = (1, 0), dq/dy = (0, 1), dq/dyaw = (-b, a), d2q/dyaw2 = (-a, -b).
-struct Term {
-  double score = 0, gx = 0, gy = 0, gt = 0;
-  double hxx = 0, hxy = 0, hxt = 0, hyy = 0, hyt = 0, htt = 0;
-};
-
-template <NdtDerivatives D>
-inline Term cellTerm(const NdtCell& cell, double tx, double ty, double a, double b, const NdtGaussConstants& k) {
-  Term t;
-  const double qx = tx - cell.mean.x(), qy = ty - cell.mean.y();
-  const double i00 = cell.information(0, 0), i01 = cell.information(0, 1), i11 = cell.information(1, 1);
-  const double u0 = i00 * qx + i01 * qy, u1 = i01 * qx + i11 * qy;  // Sigma^-1 q
-  const double e = std::exp(-0.5 * k.d2 * (qx * u0 + qy * u1));
-  t.score = -k.d1 * e;
-  if constexpr (D == NdtDerivatives::None) return t;
-  const double f = k.d1 * k.d2 * e;
-  const double gt = a * u1 - b * u0;  // q^T Sigma^-1 dq/dyaw
-  t.gx = f * u0;
-  t.gy = f * u1;
-  t.gt = f * gt;
-  if constexpr (D != NdtDerivatives::GradientAndHessian) return t;
-  const double w0 = i01 * a - i00 * b, w1 = i11 * a - i01 * b;  // Sigma^-1 dq/dyaw
-  const double d2 = k.d2;
-  t.hxx = f * (i00 - d2 * u0 * u0);
-  t.hxy = f * (i01 - d2 * u0 * u1);
-  t.hyy = f * (i11 - d2 * u1 * u1);
-  t.hxt = f * (w0 - d2 * u0 * gt);
-  t.hyt = f * (w1 - d2 * u1 * gt);
-  t.htt = f * ((a * w1 - b * w0) - (a * u0 + b * u1) - d2 * gt * gt);
-  return t;
-}
-
-inline void add(Accumulator& acc, const Term& t) {
-  acc.score += t.score;
-  acc.gx += t.gx, acc.gy += t.gy, acc.gt += t.gt;
-  acc.hxx += t.hxx, acc.hxy += t.hxy, acc.hxt += t.hxt, acc.hyy += t.hyy, acc.hyt += t.hyt, acc.htt += t.htt;
-  ++acc.matched;
-}
-
-// The bilinear weight W(tx, ty) = wx(tx) wy(ty) of one of the 2 x 2 cells around a point, as a function
-// of the pose: its value, gradient (x, y, yaw) and Hessian. wx and wy are linear in tx and ty with slopes
-// dwx, dwy, so only the mixed second derivative c = dwx dwy of W in (tx, ty) is not zero.
-struct Weight {
-  double w = 1, gx = 0, gy = 0, gt = 0;
-  double hxy = 0, hxt = 0, hyt = 0, htt = 0;
-};
-
-inline Weight bilinearWeight(double wx, double wy, double dwx, double dwy, double a, double b) {
-  Weight W;
-  W.w = wx * wy;
-  const double Wx = dwx * wy, Wy = wx * dwy, c = dwx * dwy;  // dW/dtx, dW/dty, d2W/dtx dty
-  W.gx = Wx;
-  W.gy = Wy;
-  W.gt = -b * Wx + a * Wy;  // dtx/dyaw = -b, dty/dyaw = a
-  W.hxy = c;
-  W.hxt = c * a;
-  W.hyt = -c * b;
-  W.htt = -a * Wx - b * Wy - 2.0 * a * b * c;
-  return W;
-}
-
-// W * term: the product rule (the weight's own Hessian is zero in xx and yy).
-inline Term weighted(const Term& t, const Weight& W) {
-  Term r;
-  r.score = W.w * t.score;
-  r.gx = W.w * t.gx + t.score * W.gx;
-  r.gy = W.w * t.gy + t.score * W.gy;
-  r.gt = W.w * t.gt + t.score * W.gt;
-  r.hxx = W.w * t.hxx + 2.0 * W.gx * t.gx;
-  r.hyy = W.w * t.hyy + 2.0 * W.gy * t.gy;
-  r.htt = W.w * t.htt + 2.0 * W.gt * t.gt + t.score * W.htt;
-  r.hxy = W.w * t.hxy + W.gx * t.gy + W.gy * t.gx + t.score * W.hxy;
-  r.hxt = W.w * t.hxt + W.gx * t.gt + W.gt * t.gx + t.score * W.hxt;
-  r.hyt = W.w * t.hyt + W.gy * t.gt + W.gt * t.gy + t.score * W.hyt;
-  return r;
-}
-
 // The Double4 helpers are always inlined into the AVX2 function, so no call passes one by value
 // across the ABI GCC warns about.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -219,43 +141,39 @@ struct PlacedPoint {
   double a, b, tx, ty;
 };
 
-// Calls visit(point, cell index, col offset, row offset, fu, fv) for each valid cell a point is scored
-// against: the one holding it, or the 2 x 2 whose centres surround it (offsets 0 or 1 from the
-// lower-left one; fu, fv the point's place between their centres).
+// Calls visit(point, cell index) for each valid cell of the 2 x 2 whose centres surround a point.
 template <typename Visit>
 HDPRIOR_INLINE void forEachCell(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& pose,
-                                NdtLookup lookup, Visit&& visit) {
+                                Visit&& visit) {
   const GridGeometry& g = grid.geometry();
   const int32_t* index = grid.cellIndex().data();
   const double c = std::cos(pose.z()), s = std::sin(pose.z());
   const double inv = 1.0 / g.resolution, ox = g.origin.x(), oy = g.origin.y();
-  const int span = lookup == NdtLookup::ContainingCell ? 0 : 1;
-  const double shift = 0.5 * span;
   for (const Eigen::Vector2d& p : points) {
     PlacedPoint q{c * p.x() - s * p.y(), s * p.x() + c * p.y(), 0.0, 0.0};
     q.tx = q.a + pose.x(), q.ty = q.b + pose.y();
-    const double u = (q.tx - ox) * inv - shift, v = (q.ty - oy) * inv - shift;
+    const double u = (q.tx - ox) * inv - 0.5, v = (q.ty - oy) * inv - 0.5;
     if (!(u > -1.0 && v > -1.0 && u < g.cols && v < g.rows)) continue;
     const int col = int(std::floor(u)), row = int(std::floor(v));
-    for (int dr = 0; dr <= span; ++dr) {
-      for (int dc = 0; dc <= span; ++dc) {
+    for (int dr = 0; dr <= 1; ++dr) {
+      for (int dc = 0; dc <= 1; ++dc) {
         if (!g.inside(col + dc, row + dr)) continue;
         const int32_t i = index[size_t(row + dr) * size_t(g.cols) + size_t(col + dc)];
-        if (i >= 0) visit(q, i, dc, dr, u - col, v - row);
+        if (i >= 0) visit(q, i);
       }
     }
   }
 }
 
-// The containing cell or the four nearest: terms gathered in blocks and summed in lanes.
+// The terms of the four nearest cells, gathered in blocks and summed in lanes.
 template <NdtDerivatives D>
-Accumulator accumulateUnweighted(const NdtGrid& grid, std::span<const Eigen::Vector2d> points,
-                                 const Eigen::Vector3d& pose, const NdtGaussConstants& k, NdtLookup lookup) {
+Accumulator accumulate(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& pose,
+                       const NdtGaussConstants& k) {
   const NdtCell* cells = grid.cells().data();
   Accumulator acc;
   auto block = std::make_unique<TermBlock>();
   TermBlock& t = *block;
-  forEachCell(grid, points, pose, lookup, [&](const PlacedPoint& q, int32_t i, int, int, double, double) {
+  forEachCell(grid, points, pose, [&](const PlacedPoint& q, int32_t i) {
     const NdtCell& cell = cells[i];
     t.qx[t.size] = q.tx - cell.mean.x(), t.qy[t.size] = q.ty - cell.mean.y();
     t.i00[t.size] = cell.information(0, 0), t.i01[t.size] = cell.information(0, 1), t.i11[t.size] = cell.information(1, 1);
@@ -267,30 +185,6 @@ Accumulator accumulateUnweighted(const NdtGrid& grid, std::span<const Eigen::Vec
   });
   if (t.size > 0) addTerms<D>(t, k, acc);
   return acc;
-}
-
-// The 2 x 2 cells weighted bilinearly (one term at a time: the weights' derivatives join in).
-template <NdtDerivatives D>
-Accumulator accumulateBilinear(const NdtGrid& grid, std::span<const Eigen::Vector2d> points,
-                               const Eigen::Vector3d& pose, const NdtGaussConstants& k) {
-  const NdtCell* cells = grid.cells().data();
-  const double inv = 1.0 / grid.cellSize();
-  Accumulator acc;
-  forEachCell(grid, points, pose, NdtLookup::Bilinear,
-              [&](const PlacedPoint& q, int32_t i, int dc, int dr, double fu, double fv) {
-                const Term t = cellTerm<D>(cells[i], q.tx, q.ty, q.a, q.b, k);
-                const double wx = dc == 0 ? 1.0 - fu : fu, wy = dr == 0 ? 1.0 - fv : fv;
-                const double dwx = dc == 0 ? -inv : inv, dwy = dr == 0 ? -inv : inv;
-                add(acc, weighted(t, bilinearWeight(wx, wy, dwx, dwy, q.a, q.b)));
-              });
-  return acc;
-}
-
-template <NdtDerivatives D>
-Accumulator accumulate(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& pose,
-                       const NdtGaussConstants& k, NdtLookup lookup) {
-  return lookup == NdtLookup::Bilinear ? accumulateBilinear<D>(grid, points, pose, k)
-                                       : accumulateUnweighted<D>(grid, points, pose, k, lookup);
 }
 
 }  // namespace
@@ -314,13 +208,9 @@ NdtScore scoreNdt(const NdtGrid& grid, std::span<const Eigen::Vector2d> points, 
   const NdtGaussConstants k = ndtGaussConstants(params.outlierRatio, grid.cellSize());
   Accumulator acc;
   switch (derivatives) {
-    case NdtDerivatives::None: acc = accumulate<NdtDerivatives::None>(grid, points, pose, k, params.lookup); break;
-    case NdtDerivatives::Gradient:
-      acc = accumulate<NdtDerivatives::Gradient>(grid, points, pose, k, params.lookup);
-      break;
-    case NdtDerivatives::GradientAndHessian:
-      acc = accumulate<NdtDerivatives::GradientAndHessian>(grid, points, pose, k, params.lookup);
-      break;
+    case NdtDerivatives::None: acc = accumulate<NdtDerivatives::None>(grid, points, pose, k); break;
+    case NdtDerivatives::Gradient: acc = accumulate<NdtDerivatives::Gradient>(grid, points, pose, k); break;
+    case NdtDerivatives::GradientAndHessian: acc = accumulate<NdtDerivatives::GradientAndHessian>(grid, points, pose, k); break;
   }
   NdtScore result;
   result.score = acc.score;

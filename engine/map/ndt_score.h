@@ -8,19 +8,8 @@ namespace hdprior {
 
 class NdtGrid;
 
-// Which NDT cells a transformed point is scored against.
-enum class NdtLookup {
-  ContainingCell,  // the one cell holding the point (fastest)
-  FourNearest,     // the 2x2 cells whose centres surround the point (smoother; like Biber's
-                   // four overlapping grids)
-  Bilinear,        // the same 2x2 cells weighted bilinearly by the point's place between their centres:
-                   // the score is continuous where the other two jump as points cross cell lines
-                   // (Magnusson's trilinear interpolation, in 2-D)
-};
-
 struct NdtScoreParams {
   double outlierRatio = 0.55;  // share of points assumed not to follow the map (PCL's default)
-  NdtLookup lookup = NdtLookup::ContainingCell;
 };
 
 // The Gaussian approximation of the normal-plus-uniform mixture (Biber & Strasser 2003,
@@ -32,8 +21,10 @@ struct NdtGaussConstants {
 NdtGaussConstants ndtGaussConstants(double outlierRatio, double cellSize);
 
 // The NDT score of points (ego or key-frame frame) placed on the map by the SE(2) pose
-// (x, y, yaw): p -> R(yaw) p + (x, y). Higher is better; the matcher maximises it, e.g. by
-// Newton steps delta = -hessian^-1 gradient. Derivatives are with respect to (x, y, yaw).
+// (x, y, yaw): p -> R(yaw) p + (x, y). Each point is scored against the 2 x 2 cells whose centres
+// surround it (smoother than the one cell holding it: like Biber's four overlapping grids); each
+// term lies in [0, |d1|] (d1 < 0). Higher is better; the matcher maximises it, e.g. by Newton steps
+// delta = -hessian^-1 gradient. Derivatives are with respect to (x, y, yaw).
 struct NdtScore {
   double score = 0.0;
   Eigen::Vector3d gradient = Eigen::Vector3d::Zero();

@@ -53,7 +53,7 @@ CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d
 CostLandscape matchLandscape(const HdMap& map, const MatchOptions& match, std::span<const Eigen::Vector2d> points,
                              const Eigen::Vector3d& center, CostLandscapeOptions options) {
   if (match.cellSizes.empty()) throw Error("match options", "cellSizes is empty");
-  options.score = {.outlierRatio = match.outlierRatio, .lookup = match.lookup};
+  options.score = {.outlierRatio = match.outlierRatio};
   const double finest = *std::min_element(match.cellSizes.begin(), match.cellSizes.end());
   return costLandscape(map.ndtGrid(finest), points, center, options);
 }

@@ -17,7 +17,7 @@ struct CostLandscapeOptions {
   double step = 0.1;         // ... every step metres (city axes, centred on the pose)
   double yawHalfDeg = 5.0;   // the yaw profile: offsets in [-yawHalfDeg, +yawHalfDeg] ...
   double yawStepDeg = 0.25;  // ... every yawStepDeg
-  NdtScoreParams score;      // outlier ratio and cell lookup, as the matcher's finest level
+  NdtScoreParams score;      // outlier ratio, as the matcher's finest level
   int threads = 2;           // rows are scored in parallel (the result does not depend on it)
 };
 
@@ -41,7 +41,7 @@ CostLandscape costLandscape(const NdtGrid& grid, std::span<const Eigen::Vector2d
                             const CostLandscapeOptions& options = {});
 
 // The landscape the matcher's finest level sees: the map's grid of the smallest of match.cellSizes,
-// scored with match's outlier ratio and lookup (options.score is replaced by them).
+// scored with match's outlier ratio (options.score's is replaced by it).
 CostLandscape matchLandscape(const HdMap& map, const MatchOptions& match, std::span<const Eigen::Vector2d> points,
                              const Eigen::Vector3d& center, CostLandscapeOptions options = {});
 

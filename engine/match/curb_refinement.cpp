@@ -55,17 +55,12 @@ CurbRefinement refineOnCurbs(const BoundaryDistance& boundary, std::span<const E
     }
     // Levenberg damping keeps the unobserved directions where they are.
     H.diagonal().array() += 1e-3 * H.trace() / 3.0 + 1e-9;
-    Eigen::Vector3d step;
-    if (o.lateralOnly) {
-      // Parameters (lateral, yaw): the pose moves only across its heading.
-      Eigen::Matrix<double, 3, 2> B = Eigen::Matrix<double, 3, 2>::Zero();
-      B(0, 0) = -std::sin(r.pose.z());
-      B(1, 0) = std::cos(r.pose.z());
-      B(2, 1) = 1.0;
-      step = -B * (B.transpose() * H * B).ldlt().solve(B.transpose() * b);
-    } else {
-      step = -H.ldlt().solve(b);
-    }
+    // Parameters (lateral, yaw): the pose moves only across its heading.
+    Eigen::Matrix<double, 3, 2> B = Eigen::Matrix<double, 3, 2>::Zero();
+    B(0, 0) = -std::sin(r.pose.z());
+    B(1, 0) = std::cos(r.pose.z());
+    B(2, 1) = 1.0;
+    const Eigen::Vector3d step = -B * (B.transpose() * H * B).ldlt().solve(B.transpose() * b);
     if (!step.allFinite()) break;
     r.pose += step;
     if (step.head<2>().norm() < 1e-4 && std::abs(step.z()) < 1e-5) break;

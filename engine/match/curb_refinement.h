@@ -12,7 +12,6 @@ struct CurbRefinementOptions {
   double maxDistance = 1.0;   // curb points farther than this from the boundary at the start are not used
   int minPoints = 20;
   int iterations = 10;
-  bool lateralOnly = false;   // move only across the heading and in yaw, never along
 };
 
 struct CurbRefinement {
@@ -24,8 +23,8 @@ struct CurbRefinement {
 // Moves an SE(2) pose (x, y, yaw) so the curb points (the road's edge seen by the lidar, in the
 // pose's frame) lie on the drivable boundary: Gauss-Newton on sum huber(d(T p)), d the signed
 // boundary distance. The region NDT is pulled towards cell centres where occlusion (parked cars)
-// leaves part of the drivable area unseen; the curbs that are seen are not. Directions no curb
-// observes (along a straight road) keep the start's value.
+// leaves part of the drivable area unseen; the curbs that are seen are not. The pose moves only across
+// its heading and in yaw, never along it (curbs along a straight road do not observe that direction).
 CurbRefinement refineOnCurbs(const BoundaryDistance& boundary, std::span<const Eigen::Vector2d> curbPoints,
                              const Eigen::Vector3d& start, const CurbRefinementOptions& options = {});
 

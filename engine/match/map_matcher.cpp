@@ -28,7 +28,7 @@ void validate(const MatchOptions& o) {
       !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {
     bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
   }
-  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || !(o.evidenceSpillShare >= 0 && o.evidenceSpillShare <= 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
+  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
       !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.staleRegionSize > 0) || !(o.staleDistance > 0) || !(o.staleDistancePerMetre >= 0) ||
       !(o.staleShare >= 0 && o.staleShare <= 1) || !(o.evidenceCurbBand > 0) ||
       !(o.evidenceCurbShare >= 0 && o.evidenceCurbShare < 1) || !(o.mapSigma >= 0) ||
@@ -57,10 +57,8 @@ MapMatcher::~MapMatcher() = default;
 MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> roadPoints, const Eigen::Vector3d& initial,
                               std::span<const Eigen::Vector2d> curbs) {
   const auto start = std::chrono::steady_clock::now();
-  RegionSelection selection;
-  if (options_.staleRegions) selection = pointsInAgreeingRegions(map_.boundaryDistance(), roadPoints, curbs, initial, options_);
-  const std::span<const Eigen::Vector2d> points = options_.staleRegions ? std::span<const Eigen::Vector2d>(selection.road) : roadPoints;
-  const std::span<const Eigen::Vector2d> curbPoints = options_.staleRegions ? std::span<const Eigen::Vector2d>(selection.curbs) : curbs;
+  const RegionSelection selection = pointsInAgreeingRegions(map_.boundaryDistance(), roadPoints, curbs, initial, options_);
+  const std::span<const Eigen::Vector2d> points = selection.road, curbPoints = selection.curbs;
   const auto deadline = start + std::chrono::microseconds(int64_t(options_.timeBudgetMs * 1000.0));
   MatchResult r;
   r.initial = initial;
@@ -82,9 +80,9 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> roadPoints, const
       r.path = opt.path;
       timedOut = opt.timedOut;
     }
-    if (options_.curbRefinement && !timedOut) {
+    if (!timedOut) {
       const CurbRefinementOptions co{.huber = options_.curbHuber, .maxDistance = options_.curbMaxDistance,
-                                     .minPoints = options_.minCurbPoints, .lateralOnly = options_.curbLateralOnly};
+                                     .minPoints = options_.minCurbPoints};
       const CurbRefinement c = refineOnCurbs(map_.boundaryDistance(), curbPoints, r.estimate, co);
       if (c.pose != r.estimate) r.path.push_back(c.pose);
       r.estimate = c.pose;
@@ -95,7 +93,7 @@ MatchResult MapMatcher::match(std::span<const Eigen::Vector2d> roadPoints, const
     r.path = {initial};
   }
   assessMatch(*levels_.back(), map_.drivable(), map_.boundaryDistance(), points, options_, timedOut, r);
-  if (options_.evidenceUncertainty && r.status != MatchStatus::Rejected) {
+  if (r.status != MatchStatus::Rejected) {
     widenToEvidence(plausibleHalfWidths(map_.boundaryDistance(), points, curbPoints, r.estimate, options_), options_, r);
   }
   r.timeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -27,9 +27,9 @@ class MapMatcher {
   MapMatcher& operator=(const MapMatcher&) = delete;
 
   const MatchOptions& options() const { return options_; }
-  // curbPoints (road points at curbs, same frame) refine the estimate when options().curbRefinement.
-  // With options().staleRegions, regions of points the map disagrees with at `initial` are left out
-  // first (stale_regions.h), and the result's `points` counts the rest.
+  // curbPoints (road points at curbs, same frame) refine the estimate. Regions of points the map
+  // disagrees with at `initial` are left out first (stale_regions.h), and the result's `points`
+  // counts the rest.
   MatchResult match(std::span<const Eigen::Vector2d> points, const Eigen::Vector3d& initial,
                     std::span<const Eigen::Vector2d> curbPoints = {});
 

@@ -94,11 +94,7 @@ double predictionChi2(const Eigen::Vector3d& initial, const Eigen::Vector3d& est
 
 void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> points,
                  const MatchOptions& o, bool timedOut, MatchResult& r) {
-  // The Laplace information is that of the Gaussian terms: the bilinear weights' own curvature (the
-  // ripple between cell centres) is not information about the pose, so they are judged unweighted.
-  const NdtLookup lookup = o.lookup == NdtLookup::Bilinear ? NdtLookup::FourNearest : o.lookup;
-  const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = lookup};
-  const NdtScore s = scoreNdt(grid, points, r.estimate, params);
+  const NdtScore s = scoreNdt(grid, points, r.estimate, {.outlierRatio = o.outlierRatio});
   r.score = s.score;
   r.scorePerPoint = points.empty() ? 0.0 : s.score / double(points.size());
   size_t distinctCells = 0;
@@ -108,7 +104,7 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
   // -H / (|d1| d2) is the Gauss-Newton information J^T Omega J of the points as Gaussians.
   const NdtGaussConstants k = ndtGaussConstants(o.outlierRatio, grid.cellSize());
   Eigen::Matrix3d info = -s.hessian / (std::abs(k.d1) * k.d2);
-  if (o.perCellInformation && s.matched > 0) info *= double(distinctCells) / double(s.matched);
+  if (s.matched > 0) info *= double(distinctCells) / double(s.matched);
   const Eigen::Vector3d d(1.0, 1.0, o.yawLength);
   const auto toScaled = [&](const Eigen::Matrix3d& m) {
     const Eigen::Matrix3d t = d.cwiseInverse().asDiagonal() * m * d.cwiseInverse().asDiagonal();
@@ -151,8 +147,6 @@ void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const Boun
     reject(r, "time over the budget of " + figure(o.timeBudgetMs) + " ms");
   } else if (r.inlierRatio < o.minInlierRatio) {
     reject(r, "inlier ratio " + figure(r.inlierRatio) + " < " + figure(o.minInlierRatio));
-  } else if (r.scorePerPoint < o.minScorePerPoint) {
-    reject(r, "score per point " + figure(r.scorePerPoint) + " < " + figure(o.minScorePerPoint));
   } else if (r.observableDirections == 0) {
     reject(r, "no observable direction");
   } else if (r.gateChi2 > o.gateChi2) {

@@ -3,8 +3,6 @@
 
 #include <Eigen/Core>
 
-#include "engine/map/ndt_score.h"
-
 namespace hdprior {
 
 enum class MatchBackend { Ndt2d, PclNdt };
@@ -14,11 +12,10 @@ enum class MatchBackend { Ndt2d, PclNdt };
 struct MatchOptions {
   MatchBackend backend = MatchBackend::Ndt2d;
 
-  // --- 2-D NDT (Ndt2d) ---
+  // --- 2-D NDT (Ndt2d): each point is scored against the 2 x 2 cells nearest to it ---
   // Coarse to fine; the map must carry an NDT grid of each size (HdMapOptions::ndtCellSizes).
   std::vector<double> cellSizes = {4.0, 2.0, 1.0};
   double outlierRatio = 0.55;
-  NdtLookup lookup = NdtLookup::FourNearest;
   int maxIterations = 25;               // Newton iterations per level
   int maxCoarseStride = 4;              // coarse levels use every (size / finest)^2-th point, at most this (1: all)
   double maxStepCells = 0.5;            // a step moves at most this many cells ...
@@ -35,17 +32,15 @@ struct MatchOptions {
   int pclMaxIterations = 35;
   double pclTargetSpacing = 0.2;        // drivable points of the map are thinned to this grid
 
-  // --- Curb refinement (both backends): the curb points seen are put on the drivable boundary ---
-  bool curbRefinement = true;
+  // --- Curb refinement (both backends): the curb points seen are put on the drivable boundary,
+  // correcting lateral position and yaw only ---
   double curbHuber = 0.15;              // metres
   double curbMaxDistance = 1.0;         // metres from the boundary at the NDT estimate
   int minCurbPoints = 12;               // curbs a match needs for the refinement and the curb evidence
-  bool curbLateralOnly = true;          // curbs correct lateral position and yaw only
 
   // --- Covariance and acceptance (both backends) ---
   // Points in one NDT cell are not independent observations: the Laplace information
   // -H / (|d1| d2) is scaled by (distinct cells hit / points).
-  bool perCellInformation = true;
   double yawLength = 10.0;              // metres; yaw is compared with translation as yaw * yawLength
   // Observability from the drivable boundary: points within boundaryBand of it add their
   // boundary normal's constraint; a direction is observable when its constraint eigenvalue
@@ -55,14 +50,12 @@ struct MatchOptions {
   double minBoundaryPoints = 20.0;
   double minInformation = 4.0;          // and the NDT information there at least this (sigma <= 0.5 m)
   int minPoints = 200;
-  double minInlierRatio = 0.85;         // share of points placed on the drivable area (docs/experiments/2026-12-03-min-inlier-ratio.md)
+  double minInlierRatio = 0.85;         // share of points placed on the drivable area
   // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.
   Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
-  double minScorePerPoint = 0.0;        // NDT score per point on the finest grid (max |d1|, 2.2 at 1 m)
 
   // --- A stale map (engine/match/stale_regions.h): regions where the map disagrees are left out ---
-  bool staleRegions = true;
   double staleRegionSize = 5.0;         // metres, square regions of the key frame
   double staleDistance = 1.5;           // metres outside the drivable area at the prediction, plus ...
   double staleDistancePerMetre = 0.07;  // ... this per metre of range (the prediction's yaw uncertainty) ...
@@ -73,17 +66,15 @@ struct MatchOptions {
   // a wide street or junction the points fit anywhere on a plateau. Each direction's sigma is raised
   // to the half-width of the poses the points allow / evidenceKappa, the map's own error is added,
   // and a direction beyond its cap is reported unobservable.
-  bool evidenceUncertainty = true;
   double evidenceShare = 0.01;          // poses are allowed while at most this share of the points ...
   int evidenceMinPoints = 5;            // ... (at least this many) leave the drivable area
-  double evidenceSpillShare = 0.0;      // this share of the points off on one side at the estimate: that side's edge is not seen (0: off)
   double evidenceMargin = 0.2;          // metres beyond the boundary before a point counts as off
   double evidenceCurbBand = 0.5;        // curb points (on the boundary at the estimate) count as off beyond this
   double evidenceCurbShare = 0.2;       // share of those that may leave
   int evidenceStride = 4;               // every n-th road point is counted
   double evidenceMaxOffset = 3.2;       // metres searched along and across the heading ...
   double evidenceMaxYawDeg = 6.4;       // ... and in yaw; beyond: unbounded
-  double evidenceKappa = 3.0;           // half-width = kappa sigma (chosen on the tuning family: docs/experiments/2026-12-02-honest-priors.md)
+  double evidenceKappa = 3.0;           // half-width = kappa sigma
   double mapSigma = 0.20;               // metres: the drivable polygon's own error against the kerb
   double mapSigmaYawDeg = 0.20;
   double maxSigmaAlong = 1.5;           // metres; a direction less certain than this is reported unobservable

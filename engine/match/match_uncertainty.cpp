@@ -5,7 +5,6 @@
 #include <limits>
 #include <numbers>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -119,18 +118,6 @@ Eigen::Vector3d axisVariances(const Eigen::Matrix3d& information) {
   return v;
 }
 
-// Whether at least `share` of the counted road points lie off the drivable area at the estimate on
-// the vehicle's left (y > 0) and on its right: a walk that ran on over a flush verge.
-std::pair<bool, bool> spilledSides(const OffCounter& off, const Eigen::Vector3d& estimate, double share) {
-  if (!(share > 0.0)) return {false, false};
-  const Eigen::Rotation2Dd R(estimate.z());
-  int left = 0, right = 0;
-  for (size_t i = 0; i < off.road.size(); i += size_t(off.stride))
-    if (!(off.sdf.cellDistance(R * off.road[i] + estimate.head<2>()) <= off.margin)) ++(off.road[i].y() > 0.0 ? left : right);
-  const double limit = share * off.sampled();
-  return {left >= limit, right >= limit};
-}
-
 }  // namespace
 
 Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> road,
@@ -143,16 +130,13 @@ Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const
   if (int(off.curbs.size()) < o.minCurbPoints) off.curbs.clear();
   const Allowed allowed{std::max(o.evidenceMinPoints, int(std::ceil(o.evidenceShare * off.sampled()))),
                         std::max(o.evidenceMinPoints, int(std::ceil(o.evidenceCurbShare * double(off.curbs.size()))))};
-  // Where road points spill beyond one side's edge, the points that leave when the pose moves towards
-  // that side are more of the same spill, not that edge: the pose is not bounded towards it.
-  const auto [spillLeft, spillRight] = spilledSides(off, estimate, o.evidenceSpillShare);
   Eigen::Vector3d widths;
   for (int axis = 0; axis < 3; ++axis) {
-    const bool yaw = axis == 2, lateral = axis == 1;
+    const bool yaw = axis == 2;
     const double first = yaw ? 0.1 * kDeg : 0.05, limit = yaw ? o.evidenceMaxYawDeg * kDeg : o.evidenceMaxOffset;
     const Eigen::Vector3d unit = Eigen::Vector3d::Unit(axis);
-    const double plus = lateral && spillLeft ? kInfinity : plausibleReach(off, estimate, unit, first, limit, allowed);
-    const double minus = lateral && spillRight ? kInfinity : plausibleReach(off, estimate, -unit, first, limit, allowed);
+    const double plus = plausibleReach(off, estimate, unit, first, limit, allowed);
+    const double minus = plausibleReach(off, estimate, -unit, first, limit, allowed);
     widths(axis) = 0.5 * (plus + minus);
   }
   return widths;

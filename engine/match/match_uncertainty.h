@@ -18,9 +18,7 @@ class BoundaryDistance;
 // more than evidenceCurbBand, beyond those off at the best pose met so far.
 // +infinity where the points allow the whole search range (up to options.evidenceMaxOffset /
 // evidenceMaxYawDeg): a plateau, e.g. a narrow strip of road points in a wide junction.
-// A point is off the drivable area when its signed distance is beyond options.evidenceMargin. When at
-// least options.evidenceSpillShare of the counted road points are off on one side of the vehicle at
-// the estimate (the walk ran on over a flush verge), the lateral reach towards that side is +infinity.
+// A point is off the drivable area when its signed distance is beyond options.evidenceMargin.
 Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> road,
                                     std::span<const Eigen::Vector2d> curbs, const Eigen::Vector3d& estimate,
                                     const MatchOptions& options);

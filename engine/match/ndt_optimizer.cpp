@@ -44,7 +44,7 @@ NdtOptimization optimizeNdt(const std::vector<const NdtGrid*>& levels, std::span
   NdtOptimization result;
   result.pose = initial;
   result.path.push_back(initial);
-  const NdtScoreParams params{.outlierRatio = o.outlierRatio, .lookup = o.lookup};
+  const NdtScoreParams params{.outlierRatio = o.outlierRatio};
   std::vector<Eigen::Vector2d> subset;
   const double finest = levels.empty() ? 1.0 : levels.back()->cellSize();
   for (const NdtGrid* grid : levels) {

@@ -19,7 +19,6 @@ struct Config {
   OdometryOptions odometry;
   KeyframeOptions keyframes;
   SweepRoadPointOptions roadPoints;
-  bool submapRoadPoints = false;  // match the key-frame sub-map's road points, not the keyframe sweep's alone
   MatchOptions match;
   PosePriorOptions prior;
   PoseGraphOptions graph;

@@ -4,19 +4,18 @@
 
 namespace hdprior {
 
-std::vector<SubmapLabel> pointLabels(const LabelledSubmap& submap) {
-  std::vector<SubmapLabel> labels(submap.points.size(), SubmapLabel::Other);
+std::vector<SubmapLabel> pointLabels(const LabelledSweep& sweep) {
+  std::vector<SubmapLabel> labels(sweep.points.size(), SubmapLabel::Other);
   for (size_t i = 0; i < labels.size(); ++i) {
-    if (submap.road[i] == kCurbPoint) labels[i] = SubmapLabel::Curb;
-    else if (submap.road[i] == kRoadPoint) labels[i] = SubmapLabel::Road;
-    else if (submap.ground[i]) labels[i] = SubmapLabel::Ground;
+    if (sweep.road[i] == kCurbPoint) labels[i] = SubmapLabel::Curb;
+    else if (sweep.road[i] == kRoadPoint) labels[i] = SubmapLabel::Road;
+    else if (sweep.ground[i]) labels[i] = SubmapLabel::Ground;
   }
   return labels;
 }
 
 std::vector<SubmapLabel> sweepPointLabels(const LidarSweep& sweep, const SE3& cityTEgo, const SweepRoadPointOptions& options) {
-  const SubmapSweep one{&sweep, levelRotation(cityTEgo), Eigen::Vector3d::Zero()};
-  return pointLabels(labelSubmap(std::span<const SubmapSweep>(&one, 1), options));
+  return pointLabels(labelSweep(sweep, levelRotation(cityTEgo), options));
 }
 
 const char* labelName(SubmapLabel label) {

@@ -7,8 +7,8 @@
 
 namespace hdprior {
 
-// One label per point of a labelled sub-map: curb, road, other ground or other.
-std::vector<SubmapLabel> pointLabels(const LabelledSubmap& submap);
+// One label per point of a labelled sweep: curb, road, other ground or other.
+std::vector<SubmapLabel> pointLabels(const LabelledSweep& sweep);
 
 // A single sweep's points labelled as the road points label them (ground segmentation, then the
 // road walk), levelled with the roll and pitch of cityTEgo. One label per sweep point, in order.

@@ -20,13 +20,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The SE(2) pose of b in a's frame.
-Eigen::Vector3d planarBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const double c = std::cos(a.z()), s = std::sin(a.z());
-  const Eigen::Vector2d d = b.head<2>() - a.head<2>();
-  return {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), std::remainder(b.z() - a.z(), 2.0 * std::numbers::pi)};
-}
-
 }  // namespace
 
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses)
@@ -43,18 +36,9 @@ SE3 PriorStage::predictedPose(const Keyframe& keyframe) const {
   return graph_->pose(graph_->size() - 1) * keyframe.previousTThis;
 }
 
-KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, bool submap,
-                              const SweepOf& sweepOf) {
+KeyframeSweep keyframeSweep(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, const SweepOf& sweepOf) {
   const Keyframe& kf = odometry.keyframes().at(keyframe);
-  const std::vector<size_t> frames = submap ? kf.submapFrames : std::vector<size_t>{kf.frame};
-  const Eigen::Vector3d keyframePlanar = planarPose(cityTOdom * kf.odomTEgo);
-  KeyframeSweeps out;
-  for (size_t f : frames) {
-    const SE3 cityTSweep = cityTOdom * odometry.frames()[f].odomTEgo;
-    out.loaded.push_back(sweepOf(f));
-    out.placed.push_back({out.loaded.back().get(), levelRotation(cityTSweep), planarBetween(keyframePlanar, planarPose(cityTSweep))});
-  }
-  return out;
+  return {sweepOf(kf.frame), levelRotation(cityTOdom * odometry.frames()[kf.frame].odomTEgo)};
 }
 
 bool PriorStage::gatePrior(KeyframeMatch& m) {
@@ -97,8 +81,8 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   }
 
   auto start = std::chrono::steady_clock::now();
-  const KeyframeSweeps sweeps = keyframeSweeps(odometry, odometry.keyframes().size() - 1, cityTOdom_, config_.submapRoadPoints, sweepOf);
-  const PlanarRoadPoints points = submapRoadPoints(sweeps.placed, config_.roadPoints);
+  const KeyframeSweep sweep = keyframeSweep(odometry, odometry.keyframes().size() - 1, cityTOdom_, sweepOf);
+  const PlanarRoadPoints points = sweepRoadPoints(*sweep.sweep, sweep.egoLevel, config_.roadPoints);
   times_.roadPointsS += secondsSince(start);
 
   start = std::chrono::steady_clock::now();

@@ -41,21 +41,20 @@ struct KeyframeMatch {
 // Loads the sweep of an odometry frame.
 using SweepOf = std::function<std::shared_ptr<const LidarSweep>(size_t frame)>;
 
-// The sweeps keyframe k's road points come from (its own, or with `submap` its key-frame sub-map's),
-// each placed in the keyframe's level frame; `loaded` keeps them in memory.
-struct KeyframeSweeps {
-  std::vector<std::shared_ptr<const LidarSweep>> loaded;
-  std::vector<SubmapSweep> placed;
+// The sweep keyframe k's road points come from, and the rotation that levels it (the keyframe's roll
+// and pitch in the city).
+struct KeyframeSweep {
+  std::shared_ptr<const LidarSweep> sweep;
+  Eigen::Matrix3d egoLevel = Eigen::Matrix3d::Identity();
 };
-KeyframeSweeps keyframeSweeps(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, bool submap,
-                              const SweepOf& sweepOf);
+KeyframeSweep keyframeSweep(const Odometry& odometry, size_t keyframe, const SE3& cityTOdom, const SweepOf& sweepOf);
 
 struct PriorStageTimes {
   double roadPointsS = 0, matchS = 0, graphS = 0;
 };
 
 // The paper's HD-map prior stage, fed keyframe by keyframe as the odometry makes them: the keyframe's
-// road points (its sweep, or its key-frame sub-map), scan-to-map matching from the odometry pose
+// road points (from its sweep), scan-to-map matching from the odometry pose
 // corrected by the graph so far, the pose prior (yaw, x, y from the match, z from the ground
 // height) for accepted and degenerate matches, the odometry between-factor (its covariance plus the
 // graph's drift model, widened to cover config.odometry.drift: engine/graph/odometry_information.h),

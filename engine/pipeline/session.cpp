@@ -151,13 +151,12 @@ KeyframeInspection Session::inspectKeyframe(size_t k, const SweepRoadPointOption
   const bool matched = priors_ && k < priors_->matches().size();
   out.start = start ? *start : matched ? planarPose(priors_->matches()[k].predicted) : planarPose(cityTOdom_ * kf.odomTEgo);
 
-  const KeyframeSweeps sweeps =
-      keyframeSweeps(*odometry_, k, cityTOdom_, config_.submapRoadPoints, [this](size_t f) { return frameSweep(f); });
-  const LabelledSubmap submap = labelSubmap(sweeps.placed, roadPoints);
-  const PlanarRoadPoints planar = planarRoadPoints(submap, roadPoints.thinCell);
-  out.points.reserve(submap.points.size());
-  for (const Eigen::Vector3d& p : submap.points) out.points.push_back(p.cast<float>());
-  out.labels = pointLabels(submap);
+  const KeyframeSweep sweep = keyframeSweep(*odometry_, k, cityTOdom_, [this](size_t f) { return frameSweep(f); });
+  const LabelledSweep labelled = labelSweep(*sweep.sweep, sweep.egoLevel, roadPoints);
+  const PlanarRoadPoints planar = planarRoadPoints(labelled, roadPoints.thinCell);
+  out.points.reserve(labelled.points.size());
+  for (const Eigen::Vector3d& p : labelled.points) out.points.push_back(p.cast<float>());
+  out.labels = pointLabels(labelled);
   out.roadPoints = planar.road;
   out.curbPoints = planar.curb;
   MapMatcher matcher(*map_, match);

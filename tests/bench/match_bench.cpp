@@ -46,8 +46,7 @@ const Fixture& fixture() {
       const SE3 truth3 = f.log->cityTEgo().at(f.log->sweepTimestamps()[s]);
       const Eigen::Vector3d truth = planarPose(truth3);
       const auto sweep = f.log->sweep(s);
-      const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
-      const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
+      const PlanarRoadPoints points = sweepRoadPoints(*sweep, levelRotation(truth3), SweepRoadPointOptions{});
       for (double lateral : {-1.5, 0.0, 1.5}) {
         for (double yawDeg : {-3.0, 0.0, 3.0}) {
           f.cases.push_back({points.road, points.curb, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDeg})});
@@ -72,13 +71,11 @@ std::vector<Case> thinnedTo(const std::vector<Case>& cases, size_t count) {
   return out;
 }
 
-void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncertainty = true, size_t pointCap = 0) {
+void runMatches(benchmark::State& state, MatchBackend backend, size_t pointCap = 0) {
   const Fixture& f = fixture();
   const std::vector<Case> cases = pointCap > 0 ? thinnedTo(f.cases, pointCap) : f.cases;
   MatchOptions o;
   o.backend = backend;
-  o.evidenceUncertainty = honestUncertainty;
-  o.staleRegions = honestUncertainty;
   o.timeBudgetMs = 1e6;  // measure the full match, never cut it
   MapMatcher matcher(*f.map, o);
   size_t i = 0, n = 0, ok = 0;
@@ -100,28 +97,25 @@ void runMatches(benchmark::State& state, MatchBackend backend, bool honestUncert
   state.counters["points"] = double(cases.front().points.size());
 }
 
-// Argument: the default (1: stale regions and the evidence's uncertainty) or the matcher before them (0).
-void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, state.range(0) == 1); }
-BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90)->Arg(1)->Arg(0);
+void BM_MatchNdt2d(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d); }
+BENCHMARK(BM_MatchNdt2d)->Unit(benchmark::kMillisecond)->Iterations(90);
 
 // The default matcher on the same starts with 3,500 road points a sweep: the speed target.
-void BM_MatchNdt2dAt3500(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, true, 3500); }
+void BM_MatchNdt2dAt3500(benchmark::State& state) { runMatches(state, MatchBackend::Ndt2d, 3500); }
 BENCHMARK(BM_MatchNdt2dAt3500)->Unit(benchmark::kMillisecond)->Iterations(90);
 
 void BM_MatchPclNdt(benchmark::State& state) { runMatches(state, MatchBackend::PclNdt); }
 BENCHMARK(BM_MatchPclNdt)->Unit(benchmark::kMillisecond)->Iterations(18);
 
-// Argument: lane seeds on (1, the default) or off (0, every level seed).
 void BM_SweepRoadPoints(benchmark::State& state) {
   const Fixture& f = fixture();
   const auto sweep = f.log->sweep(0);
   const Eigen::Matrix3d level = levelRotation(f.log->cityTEgo().at(f.log->sweepTimestamps()[0]));
   SweepRoadPointOptions options;
-  options.road.laneSeeds = state.range(0) != 0;
-  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level, options).size());
+  for (auto _ : state) benchmark::DoNotOptimize(sweepRoadPoints(*sweep, level, options).road.size());
   state.counters["sweep_points"] = double(sweep->points.size());
 }
-BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond)->Arg(1)->Arg(0);
+BENCHMARK(BM_SweepRoadPoints)->Unit(benchmark::kMillisecond);
 
 // The tuning bench's cost landscape: 61 x 61 (x, y) offsets every 0.1 m and 41 yaw offsets, the
 // first sweep's road points on the finest grid around the ground truth.

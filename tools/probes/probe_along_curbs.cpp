@@ -113,8 +113,8 @@ int main(int argc, char** argv) try {
               log.id().c_str());
   for (const KeyframeMatch& m : run.matches) {
     if (m.match.status == MatchStatus::Rejected) continue;
-    const KeyframeSweeps sweeps = keyframeSweeps(*run.odometry, m.keyframe, run.cityTOdom, config.submapRoadPoints, sweepOf);
-    const PlanarRoadPoints points = submapRoadPoints(sweeps.placed, config.roadPoints);
+    const KeyframeSweep sweep = keyframeSweep(*run.odometry, m.keyframe, run.cityTOdom, sweepOf);
+    const PlanarRoadPoints points = sweepRoadPoints(*sweep.sweep, sweep.egoLevel, config.roadPoints);
     const Eigen::Vector3d truth = planarPose(run.groundTruth.at(m.timestampNs));
     const Eigen::Vector2d heading(std::cos(truth.z()), std::sin(truth.z()));
     int cross = 0;

@@ -58,11 +58,9 @@ bool drawCellSizes(AppState& state) {
 bool drawMatcher(AppState& state) {
   MatchOptions& m = state.bench().config.match;
   bool changed = drawCellSizes(state);
-  int backend = int(m.backend), lookup = int(m.lookup);
+  int backend = int(m.backend);
   const char* backends[] = {"ndt2d", "pcl"};
-  const char* lookups[] = {"containing cell", "four nearest", "bilinear"};
   if (ImGui::Combo("backend", &backend, backends, 2)) m.backend = MatchBackend(backend), changed = true;
-  if (ImGui::Combo("cell lookup", &lookup, lookups, 3)) m.lookup = NdtLookup(lookup), changed = true;
   changed |= slider("outlier ratio", m.outlierRatio, 0.05, 0.95);
   changed |= sliderInt("iterations", m.maxIterations, 1, 100);
   changed |= slider("step (cells)", m.maxStepCells, 0.05, 2.0);
@@ -70,13 +68,8 @@ bool drawMatcher(AppState& state) {
   changed |= slider("max step gain", m.maxStepGain, 1.0, 16.0, "%.1f");
   changed |= sliderInt("coarse stride", m.maxCoarseStride, 1, 16);
   changed |= slider("time budget (ms)", m.timeBudgetMs, 1.0, 500.0, "%.0f");
-  changed |= ImGui::Checkbox("curb refinement", &m.curbRefinement);
-  if (m.curbRefinement) {
-    ImGui::SameLine();
-    changed |= ImGui::Checkbox("lateral only", &m.curbLateralOnly);
-    changed |= slider("curb huber (m)", m.curbHuber, 0.01, 1.0);
-    changed |= slider("curb max dist (m)", m.curbMaxDistance, 0.1, 3.0);
-  }
+  changed |= slider("curb huber (m)", m.curbHuber, 0.01, 1.0);
+  changed |= slider("curb max dist (m)", m.curbMaxDistance, 0.1, 3.0);
   return changed;
 }
 
@@ -102,14 +95,10 @@ bool drawRoadPoints(AppState& state) {
   changed |= slider("curb step (m)", r.road.maxStep, 0.01, 0.3, "%.3f");
   changed |= slider("step per metre", r.road.stepPerMetre, 0.0, 0.05, "%.3f");
   changed |= slider("max gap (m)", r.road.maxGap, 0.5, 20.0, "%.1f");
-  changed |= ImGui::Checkbox("lane seeds (end at a kerb across the road)", &r.road.laneSeeds);
-  if (r.road.laneSeeds) {
-    changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
-    changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
-  }
+  changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
+  changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
   changed |= slider("ground plane dist (m)", r.ground.planeDistance, 0.02, 0.5, "%.2f");
   changed |= slider("ground max tilt (deg)", r.ground.maxTiltDeg, 2.0, 45.0, "%.0f");
-  changed |= ImGui::Checkbox("key-frame sub-map (next run)", &state.bench().config.submapRoadPoints);
   return changed;
 }
 

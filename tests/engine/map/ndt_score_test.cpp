@@ -49,7 +49,7 @@ TEST(NdtScore, SingleCellClosedForm) {
   const std::vector<Eigen::Vector2d> points = {{0.0, 0.0}, {0.2, 0.1}, {5.0, 5.0}};
   const Eigen::Vector3d pose(0.5, 0.25, 0.0);
   const NdtScore s = scoreNdt(grid, points, pose);
-  EXPECT_EQ(s.matched, 2u);  // the third point falls outside every cell
+  EXPECT_EQ(s.matched, 2u);  // the third point is near no cell
   double expected = 0.0;
   for (int i = 0; i < 2; ++i) {
     const Eigen::Vector2d q = place(pose, points[size_t(i)]) - cell->mean;
@@ -86,13 +86,12 @@ class RealNdtScore : public ::testing::Test {
     delete points_;
   }
 
-  // Drops points that lie within `margin` of a cell edge (or of a cell centre line for the
-  // four-cell lookup) at `pose`, where the score is not differentiable.
-  static std::vector<Eigen::Vector2d> awayFromEdges(const Eigen::Vector3d& pose, double margin, NdtLookup lookup) {
+  // Drops points that lie within `margin` of a cell centre line at `pose`, where the set of four
+  // nearest cells changes and the score is not differentiable.
+  static std::vector<Eigen::Vector2d> awayFromEdges(const Eigen::Vector3d& pose, double margin) {
     std::vector<Eigen::Vector2d> kept;
-    const double shift = lookup == NdtLookup::ContainingCell ? 0.0 : 0.5;
     for (const Eigen::Vector2d& p : *points_) {
-      const Eigen::Vector2d uv = grid_->geometry().toCell(place(pose, p)).array() - shift;
+      const Eigen::Vector2d uv = grid_->geometry().toCell(place(pose, p)).array() - 0.5;
       const Eigen::Vector2d frac = uv.array() - uv.array().floor();
       if ((frac.array() > margin).all() && (frac.array() < 1.0 - margin).all()) kept.push_back(p);
     }
@@ -108,34 +107,32 @@ Eigen::Vector3d* RealNdtScore::truth_ = nullptr;
 std::vector<Eigen::Vector2d>* RealNdtScore::points_ = nullptr;
 
 TEST_F(RealNdtScore, GradientAndHessianMatchCentralDifferences) {
-  for (NdtLookup lookup : {NdtLookup::ContainingCell, NdtLookup::FourNearest, NdtLookup::Bilinear}) {
-    const NdtScoreParams params{.outlierRatio = 0.55, .lookup = lookup};
-    for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0.3, -0.2, 0.02), Eigen::Vector3d(-0.7, 0.4, -0.05)}) {
-      const Eigen::Vector3d pose = *truth_ + offset;
-      const std::vector<Eigen::Vector2d> points = awayFromEdges(pose, 1e-3, lookup);
-      ASSERT_GT(points.size(), 1000u);
-      const NdtScore s = scoreNdt(*grid_, points, pose, params);
-      const double h = 1e-6;
-      Eigen::Vector3d fdGradient;
-      Eigen::Matrix3d fdHessian;
-      for (int i = 0; i < 3; ++i) {
-        const Eigen::Vector3d step = Eigen::Vector3d::Unit(i) * h;
-        const NdtScore plus = scoreNdt(*grid_, points, pose + step, params);
-        const NdtScore minus = scoreNdt(*grid_, points, pose - step, params);
-        ASSERT_EQ(plus.matched, s.matched);
-        ASSERT_EQ(minus.matched, s.matched);
-        fdGradient(i) = (plus.score - minus.score) / (2 * h);
-        fdHessian.col(i) = (plus.gradient - minus.gradient) / (2 * h);
-      }
-      EXPECT_LT((s.gradient - fdGradient).norm(), 1e-4 * s.gradient.norm())
-          << "analytic " << s.gradient.transpose() << "\nfinite differences " << fdGradient.transpose();
-      EXPECT_LT((s.hessian - fdHessian).norm(), 1e-4 * s.hessian.norm())
-          << "analytic\n" << s.hessian << "\nfinite differences\n" << fdHessian;
-      EXPECT_TRUE(s.hessian.isApprox(s.hessian.transpose(), 1e-15));
-      // Derivative levels compute the same score.
-      EXPECT_NEAR(scoreNdt(*grid_, points, pose, params, NdtDerivatives::None).score, s.score, 1e-9 * std::abs(s.score));
-      EXPECT_TRUE(scoreNdt(*grid_, points, pose, params, NdtDerivatives::Gradient).gradient.isApprox(s.gradient, 1e-12));
+  const NdtScoreParams params{.outlierRatio = 0.55};
+  for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0.3, -0.2, 0.02), Eigen::Vector3d(-0.7, 0.4, -0.05)}) {
+    const Eigen::Vector3d pose = *truth_ + offset;
+    const std::vector<Eigen::Vector2d> points = awayFromEdges(pose, 1e-3);
+    ASSERT_GT(points.size(), 1000u);
+    const NdtScore s = scoreNdt(*grid_, points, pose, params);
+    const double h = 1e-6;
+    Eigen::Vector3d fdGradient;
+    Eigen::Matrix3d fdHessian;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d step = Eigen::Vector3d::Unit(i) * h;
+      const NdtScore plus = scoreNdt(*grid_, points, pose + step, params);
+      const NdtScore minus = scoreNdt(*grid_, points, pose - step, params);
+      ASSERT_EQ(plus.matched, s.matched);
+      ASSERT_EQ(minus.matched, s.matched);
+      fdGradient(i) = (plus.score - minus.score) / (2 * h);
+      fdHessian.col(i) = (plus.gradient - minus.gradient) / (2 * h);
     }
+    EXPECT_LT((s.gradient - fdGradient).norm(), 1e-4 * s.gradient.norm())
+        << "analytic " << s.gradient.transpose() << "\nfinite differences " << fdGradient.transpose();
+    EXPECT_LT((s.hessian - fdHessian).norm(), 1e-4 * s.hessian.norm())
+        << "analytic\n" << s.hessian << "\nfinite differences\n" << fdHessian;
+    EXPECT_TRUE(s.hessian.isApprox(s.hessian.transpose(), 1e-15));
+    // Derivative levels compute the same score.
+    EXPECT_NEAR(scoreNdt(*grid_, points, pose, params, NdtDerivatives::None).score, s.score, 1e-9 * std::abs(s.score));
+    EXPECT_TRUE(scoreNdt(*grid_, points, pose, params, NdtDerivatives::Gradient).gradient.isApprox(s.gradient, 1e-12));
   }
 }
 
@@ -144,26 +141,18 @@ TEST_F(RealNdtScore, GradientAndHessianMatchCentralDifferences) {
 // all look alike, so the per-cell Hessian overstates the curvature. The matcher has to
 // account for that; see the matcher issue.)
 TEST_F(RealNdtScore, TruePoseIsALocalMaximum) {
-  for (NdtLookup lookup : {NdtLookup::ContainingCell, NdtLookup::FourNearest, NdtLookup::Bilinear}) {
-    const NdtScoreParams params{.outlierRatio = 0.55, .lookup = lookup};
-    const NdtScore atTruth = scoreNdt(*grid_, *points_, *truth_, params);
-    for (double d : {0.05, 0.1, 0.3, 0.5, 1.0}) {
-      // The bilinear score ripples between cell centres for the map's regular 0.1 m samples: a 0.05 m
-      // shift scores up to 0.3 % higher than the truth (measured), so it is held to 0.3 m and beyond.
-      if (lookup == NdtLookup::Bilinear && d < 0.3) continue;
-      for (int axis = 0; axis < 3; ++axis) {
-        const double step = axis == 2 ? d / 20 : d;  // yaw: 2.5 mrad .. 50 mrad
-        for (double sign : {-1.0, 1.0}) {
-          const Eigen::Vector3d pose = *truth_ + sign * step * Eigen::Vector3d::Unit(axis);
-          EXPECT_LT(scoreNdt(*grid_, *points_, pose, params).score, atTruth.score) << pose.transpose();
-        }
+  const NdtScoreParams params{.outlierRatio = 0.55};
+  const NdtScore atTruth = scoreNdt(*grid_, *points_, *truth_, params);
+  for (double d : {0.05, 0.1, 0.3, 0.5, 1.0}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double step = axis == 2 ? d / 20 : d;  // yaw: 2.5 mrad .. 50 mrad
+      for (double sign : {-1.0, 1.0}) {
+        const Eigen::Vector3d pose = *truth_ + sign * step * Eigen::Vector3d::Unit(axis);
+        EXPECT_LT(scoreNdt(*grid_, *points_, pose, params).score, atTruth.score) << pose.transpose();
       }
     }
-    // The bilinear weights add the ripple's curvature to the Hessian; the matcher judges its
-    // information from the unweighted terms (match_assessment).
-    if (lookup == NdtLookup::Bilinear) continue;
-    EXPECT_LT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(atTruth.hessian).eigenvalues().maxCoeff(), 0.0);
   }
+  EXPECT_LT(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(atTruth.hessian).eigenvalues().maxCoeff(), 0.0);
 }
 
 }  // namespace

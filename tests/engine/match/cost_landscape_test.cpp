@@ -98,7 +98,7 @@ TEST(CostLandscape, ValuesAreTheNdtScoreAtEachOffset) {
   const Eigen::Vector3d pose(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = test::ringRoadPoints(map.drivable(), pose);
   CostLandscapeOptions o;
-  o.score = {.outlierRatio = 0.55, .lookup = NdtLookup::FourNearest};
+  o.score = {.outlierRatio = 0.55};
   o.halfExtent = 1.0;
   o.step = 0.5;
   o.yawHalfDeg = 2.0;

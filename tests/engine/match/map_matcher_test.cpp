@@ -127,9 +127,8 @@ TEST(MapMatcher, RecordsTheIterationPathFromStartToEstimate) {
   const Eigen::Vector3d start = offsetPose(truth, {1.0, -1.5, 3.0 * kDeg});
   MatchOptions o;
   o.timeBudgetMs = 1e6;
-  o.curbRefinement = false;
   MapMatcher matcher(map, o);
-  const MatchResult r = matcher.match(points, start);
+  const MatchResult r = matcher.match(points, start);  // no curb points: no refinement step
   ASSERT_GT(r.iterations, 1);
   ASSERT_EQ(r.path.size(), size_t(r.iterations) + 1);  // the start, then one pose per Newton iteration
   EXPECT_EQ(r.path.front(), start);
@@ -220,12 +219,10 @@ TEST(MapMatcher, CurbsCorrectTheOcclusionBiasOfTheRegionNdt) {
     if (p.y() < 1.5) points.push_back(p);  // the vehicle's frame is the city's, shifted by 3 m along
   }
   for (double x = -25.0; x <= 25.0; x += 0.5) curb.emplace_back(x, -4.99);  // at the curb face
-  MatchOptions ndtOnly;
-  ndtOnly.curbRefinement = false;
-  MapMatcher plain(map, ndtOnly), withCurbs(map, {});
+  MapMatcher matcher(map, {});
   const Eigen::Vector3d start = offsetPose(truth, {0.3, 0.4, 1.0 * kDeg});
-  const Eigen::Vector3d biased = planarError(truth, plain.match(points, start).estimate);
-  const MatchResult r = withCurbs.match(points, start, curb);
+  const Eigen::Vector3d biased = planarError(truth, matcher.match(points, start).estimate);  // without curbs: NDT alone
+  const MatchResult r = matcher.match(points, start, curb);
   const Eigen::Vector3d e = planarError(truth, r.estimate);
   std::printf("lateral error: region NDT %.3f m, with curbs %.4f m; yaw %.3f / %.4f deg\n", biased.y(), e.y(),
               biased.z() / kDeg, e.z() / kDeg);

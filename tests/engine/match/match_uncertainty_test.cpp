@@ -76,28 +76,6 @@ TEST(MatchUncertainty, OneSidedRoadPointsNeedTheCurbToBoundTheLateralPlace) {
   EXPECT_TRUE(std::isinf(withCurbs.x()));
 }
 
-// A 10 m road whose road points run on 3 m over a flush verge on the left (the walk found no kerb
-// there): the points leaving when the pose moves left are more of the spill, not the left edge, so
-// with the spill rule the lateral place is unbounded; a clean road is not taken for a spill.
-TEST(MatchUncertainty, RoadPointsSpillingOverOneEdgeLeaveTheLateralPlaceUnbounded) {
-  const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)}));
-  const Eigen::Vector3d truth(3.0, 0.0, 0.0);
-  std::vector<Eigen::Vector2d> road, spilled;
-  for (double x = -30.0; x <= 30.0; x += 0.2) {
-    for (double y = -4.9; y <= 4.9; y += 0.25) road.emplace_back(x, y);
-    for (double y = 5.1; y <= 8.0; y += 0.25) spilled.emplace_back(x, y);
-  }
-  spilled.insert(spilled.end(), road.begin(), road.end());
-  MatchOptions o;
-  EXPECT_LT(plausibleHalfWidths(map.boundaryDistance(), spilled, {}, truth, o).y(), 0.5);
-  o.evidenceSpillShare = 0.05;
-  const Eigen::Vector3d w = plausibleHalfWidths(map.boundaryDistance(), spilled, {}, truth, o);
-  EXPECT_TRUE(std::isinf(w.y())) << w.transpose();
-  EXPECT_LT(w.z(), 6.4 * kDeg) << w.transpose();
-  const Eigen::Vector3d clean = plausibleHalfWidths(map.boundaryDistance(), road, {}, truth, o);
-  EXPECT_LT(clean.y(), 1.0) << clean.transpose();
-}
-
 // The widened covariance: along each observed direction (here the estimate frame's axes) at least
 // half-width / kappa, plus the map's error; a direction beyond its cap is dropped: degenerate.
 TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCaps) {

@@ -42,8 +42,7 @@ CaseOutcome runCase(const HdMap& map, const ArgoverseLog& log, size_t sweepIndex
   const SE3 truth3 = log.cityTEgo().at(log.sweepTimestamps()[sweepIndex]);
   const Eigen::Vector3d truth = planarPose(truth3);
   const auto sweep = log.sweep(sweepIndex);
-  const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
-  const PlanarRoadPoints all = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
+  const PlanarRoadPoints all = sweepRoadPoints(*sweep, levelRotation(truth3), SweepRoadPointOptions{});
   const std::vector<Eigen::Vector2d> road = kept(all.road, keep), curb = kept(all.curb, keep);
   CaseOutcome c;
   double maxLateral = 0, maxYaw = 0;

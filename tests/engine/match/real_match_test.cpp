@@ -34,8 +34,7 @@ GridOutcome runGrid(MatchBackend backend, size_t sweepIndex, bool print) {
   const SE3 truth3 = log.cityTEgo().at(log.sweepTimestamps()[sweepIndex]);
   const Eigen::Vector3d truth = planarPose(truth3);
   const auto sweep = log.sweep(sweepIndex);
-  const SubmapSweep one{sweep.get(), levelRotation(truth3), Eigen::Vector3d::Zero()};
-  const PlanarRoadPoints points = submapRoadPoints(std::span(&one, 1), SweepRoadPointOptions{});
+  const PlanarRoadPoints points = sweepRoadPoints(*sweep, levelRotation(truth3), SweepRoadPointOptions{});
   MapMatcher matcher(map, options);
   GridOutcome g;
   for (double along : {-1.0, 0.0, 1.0}) {

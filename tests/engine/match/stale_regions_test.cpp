@@ -36,10 +36,11 @@ TEST(StaleRegions, AreasMissingFromTheMapAreLeftOutAndTheRestStillMatches) {
   MatchOptions o;
   o.timeBudgetMs = 1e6;
   const Eigen::Vector3d start = offsetPose(truth, {0.0, 0.8, 0.02});
-  o.staleRegions = false;
-  const MatchResult whole = MapMatcher(stale, o).match(points, start);
+  MatchOptions keepAll = o;
+  keepAll.staleShare = 1.0;  // no region can have more than all its points far: every point is kept
+  const MatchResult whole = MapMatcher(stale, keepAll).match(points, start);
+  EXPECT_EQ(whole.staleRegionPoints, 0u);
   EXPECT_EQ(whole.status, MatchStatus::Rejected) << "inliers " << whole.inlierRatio;
-  o.staleRegions = true;
   const MatchResult regional = MapMatcher(stale, o).match(points, start);
   EXPECT_EQ(regional.status, MatchStatus::Degenerate) << regional.reason << " " << regional.evidenceHalfWidths.transpose();
   EXPECT_GT(regional.staleRegionPoints, points.size() / 2);

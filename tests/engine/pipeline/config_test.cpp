@@ -126,6 +126,21 @@ TEST(Config, TheOdometryDriftIsNotAKey) {
   EXPECT_FALSE(Config{}.odometry.drift.active());
 }
 
+// The switches that were measured and left off, and the on-switches that are the method, are gone
+// with their code paths (docs/experiments/2026-12-06-configuration-pruned.md).
+TEST(Config, RemovedSwitchesAreUnknownKeys) {
+  for (const char* key : {"odometry.registration.scan_to_scan_guess", "odometry.features.sharp_per_sector", "road_points.submap",
+                          "road_points.road.lane_seeds", "match.lookup", "match.evidence_spill_share", "match.curb_refinement",
+                          "match.stale_regions", "match.evidence_uncertainty", "prior.along_track", "graph.odometry_scale_sigma",
+                          "graph.odometry_yaw_drift_sigma_deg_per_100m", "graph.estimate_drift_model", "graph.fix_first"}) {
+    std::string pointer = std::string("/") + key;
+    for (char& c : pointer) if (c == '.') c = '/';
+    nlohmann::json file = nlohmann::json::object();
+    file[nlohmann::json::json_pointer(pointer)] = true;
+    EXPECT_EQ(errorOf(file.dump()), std::string("my.json: unknown key ") + key);
+  }
+}
+
 TEST(Config, TheGraphsDriftModel) {
   const Config c = parseConfig(R"({"graph": {"odometry_translation_sigma_per_m": 0.01, "odometry_rotation_sigma_deg_per_m": 0.02}})",
                                "c.json");

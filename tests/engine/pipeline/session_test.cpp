@@ -107,7 +107,6 @@ TEST_F(SessionTest, InspectingAKeyframeReproducesItsMatchAndLabelsItsSubmap) {
   MatchOptions coarse = config.match;
   coarse.cellSizes = {1.0};
   coarse.maxIterations = 1;
-  coarse.curbRefinement = false;
   const Eigen::Vector3d start = planarPose(session.matches()[1].predicted) + Eigen::Vector3d(0.5, -0.3, 0.0);
   const KeyframeInspection moved = session.inspectKeyframe(1, config.roadPoints, coarse, start);
   EXPECT_EQ(moved.start, start);
