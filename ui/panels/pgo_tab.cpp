@@ -20,19 +20,13 @@ void drawWeights(AppState& state) {
   ImGui::PushItemWidth(150);
   ImGui::Text("HD-map priors");
   sliderD("altitude sigma (m)", p.altitudeSigma, 0.01, 1.0);
-  sliderD("min sigma xy (m)", p.minSigmaXY, 0.0, 1.0);
-  sliderD("min sigma yaw (deg)", p.minSigmaYawDeg, 0.0, 5.0);
   sliderD("ego height (m)", p.egoHeight, 0.0, 1.0);
   sliderD("along-track sigma (m)", p.alongTrackSigma, 0.0, 5.0);
-  ImGui::Checkbox("constrain along-track", &p.alongTrack);
   ImGui::Text("robust loss and graph");
   sliderD("prior Huber (sigma)", g.priorHuber, 0.1, 10.0);
   ImGui::SliderInt("max iterations", &g.maxIterations, 1, 200);
-  sliderD("odometry sigma (m)", g.odometryTranslationSigma, 0.0, 0.5, "%.3f");
-  sliderD("odometry sigma (deg)", g.odometryRotationSigmaDeg, 0.0, 2.0, "%.3f");
   sliderD("odometry sigma per m", g.odometryTranslationSigmaPerM, 0.0, 0.05, "%.4f");
   sliderD("odometry sigma (deg/m)", g.odometryRotationSigmaDegPerM, 0.0, 0.1, "%.4f");
-  ImGui::Checkbox("fix first keyframe", &g.fixFirst);
   ImGui::PopItemWidth();
 }
 
