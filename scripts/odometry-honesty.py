@@ -72,11 +72,10 @@ def step_covariance(keyframe, model):
     own = keyframe.get('relative_covariance_v_w')
     if own and not isinstance(own[0], list):
         own = [own[6 * r:6 * r + 6] for r in range(6)]  # row-major, 36 numbers
-    use_own = model.get('odometry_covariance', True) and own
     idx = (0, 1, 5)
-    cov = [[(own[i][j] if use_own else 0.0) for j in idx] for i in idx]
-    trans = model['translation_sigma_m'] ** 2 + (model['translation_sigma_per_m'] * d) ** 2
-    rot = math.radians(model['rotation_sigma_deg']) ** 2 + (math.radians(model['rotation_sigma_deg_per_m']) * d) ** 2
+    cov = [[(own[i][j] if own else 0.0) for j in idx] for i in idx]
+    trans = (model['translation_sigma_per_m'] * d) ** 2
+    rot = (math.radians(model['rotation_sigma_deg_per_m']) * d) ** 2
     cov[0][0] += trans
     cov[1][1] += trans
     cov[2][2] += rot

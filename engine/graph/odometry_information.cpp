@@ -13,15 +13,15 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 }  // namespace
 
 Eigen::Matrix<double, 6, 1> odometryDriftVariances(double distance, const PoseGraphOptions& o) {
-  const double rotation = square(radians(o.odometryRotationSigmaDeg)) + square(radians(o.odometryRotationSigmaDegPerM) * distance);
-  const double translation = square(o.odometryTranslationSigma) + square(o.odometryTranslationSigmaPerM * distance);
+  const double rotation = square(radians(o.odometryRotationSigmaDegPerM) * distance);
+  const double translation = square(o.odometryTranslationSigmaPerM * distance);
   Eigen::Matrix<double, 6, 1> v;
   v << rotation, rotation, rotation, translation, translation, translation;
   return v;
 }
 
 Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& previousTThis, const PoseGraphOptions& options) {
-  const Matrix6d own = options.odometryCovariance ? relativeCovariance : Matrix6d::Zero();
+  const Matrix6d& own = relativeCovariance;
   // [v, w] -> [w, v]: the between-factor's residual is [rotation, translation].
   Matrix6d covariance;
   covariance << own.bottomRightCorner<3, 3>(), own.bottomLeftCorner<3, 3>(), own.topRightCorner<3, 3>(), own.topLeftCorner<3, 3>();

@@ -14,12 +14,7 @@ namespace hdprior {
 // find atan2/sqrt by argument-dependent lookup, so this header needs no Ceres). Parameters:
 // a unit quaternion (x, y, z, w: Eigen's order) and a translation per pose.
 
-// Odometry between-factor with the odometry's scale error s and yaw drift b (radians per metre; states
-// of their own, see PoseGraphOptions):
-// r = sqrt(Omega) [2 vec((q_meas Rz(-b d))^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - S t_meas], S = diag(1 + s, 1 + s, 1),
-// d the step's length in the plane: an odometry whose heading turns b d too far left over the step.
-// The scale acts in the vehicle's plane only: on a grade the altitude priors would otherwise take a
-// pitch drift for a scale error (a 0.1 deg pitch bias on a 3 % grade looks like 6 % scale in z).
+// Odometry between-factor: r = sqrt(Omega) [2 vec(q_meas^-1 q_i^-1 q_j); R_i^-1 (t_j - t_i) - t_meas].
 struct BetweenFactor {
   Eigen::Quaterniond qMeasured;
   Eigen::Vector3d tMeasured;
@@ -29,30 +24,15 @@ struct BetweenFactor {
       : qMeasured(iTj.rotation()), tMeasured(iTj.translation()), sqrtInformation(sqrtInfo) {}
 
   template <typename T>
-  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, const T* scale, const T* yawDrift, T* residual) const {
+  bool operator()(const T* qi, const T* ti, const T* qj, const T* tj, T* residual) const {
     const Eigen::Map<const Eigen::Quaternion<T>> Qi(qi), Qj(qj);
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Ti(ti), Tj(tj);
-    const Eigen::Quaternion<T> qij = Qi.conjugate() * Qj;
-    const T halfDrift = T(-0.5 * tMeasured.head<2>().norm()) * yawDrift[0];
-    const Eigen::Quaternion<T> drift(cos(halfDrift), T(0), T(0), sin(halfDrift));
-    const Eigen::Quaternion<T> qe = (qMeasured.cast<T>() * drift).conjugate() * qij;
+    const Eigen::Quaternion<T> qe = qMeasured.cast<T>().conjugate() * (Qi.conjugate() * Qj);
     Eigen::Matrix<T, 6, 1> r;
     r.template head<3>() = T(2.0) * qe.vec();
-    Eigen::Matrix<T, 3, 1> scaled = tMeasured.cast<T>();
-    scaled.template head<2>() *= T(1.0) + scale[0];
-    r.template tail<3>() = Qi.conjugate() * (Tj - Ti) - scaled;
+    r.template tail<3>() = Qi.conjugate() * (Tj - Ti) - tMeasured.cast<T>();
     Eigen::Map<Eigen::Matrix<T, 6, 1>> out(residual);
     out = sqrtInformation.cast<T>() * r;
-    return true;
-  }
-};
-
-// The odometry's scale error: a random walk from keyframe to keyframe, r = (s_j - s_i) / sigma.
-struct ScaleStep {
-  double sigma;
-  template <typename T>
-  bool operator()(const T* si, const T* sj, T* residual) const {
-    residual[0] = (sj[0] - si[0]) / T(sigma);
     return true;
   }
 };

@@ -15,35 +15,18 @@ struct PoseGraph::Impl {
   ceres::Problem problem;
   std::vector<std::unique_ptr<Eigen::Quaterniond>> q;  // stable addresses for Ceres
   std::vector<std::unique_ptr<Eigen::Vector3d>> t;
-  std::vector<std::unique_ptr<double>> scale;  // the odometry's scale error; one for all (shared) or one per keyframe
-  std::vector<bool> hasPrior;
   std::vector<double> routeMetres;  // along the odometry, from the first keyframe
   std::vector<std::unique_ptr<Eigen::Vector2d>> mapOffset;  // the map's error at each prior (mapErrorLength > 0)
   std::vector<double> mapOffsetMetres;
   Eigen::Vector2d zeroOffset = Eigen::Vector2d::Zero();  // held constant: priors without a map offset state
-  double zeroScale = 0.0;  // the scale prior's anchor
-  double yawDrift = 0.0;   // radians per metre: the odometry's yaw drift (held at 0 without the state)
-  double zeroYawDrift = 0.0;
-  bool firstFixed = false;
 };
 
 PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
-  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || options_.incrementalWindow < 0 ||
-      !(options_.odometryScaleSigma >= 0) || !(options_.odometryScaleSigmaPerSqrtM >= 0) || !(options_.mapErrorLength >= 0) ||
-      !(options_.odometryYawDriftSigmaDegPer100m >= 0)) {
-    throw Error("pose graph options", "priorHuber, maxIterations, incrementalWindow, the scale or yaw drift sigmas or mapErrorLength out of range");
+  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || !(options_.mapErrorLength >= 0)) {
+    throw Error("pose graph options", "priorHuber, maxIterations or mapErrorLength out of range");
   }
   impl_->problem.AddParameterBlock(impl_->zeroOffset.data(), 2);
   impl_->problem.SetParameterBlockConstant(impl_->zeroOffset.data());
-  impl_->problem.AddParameterBlock(&impl_->yawDrift, 1);
-  if (yawDriftIsState()) {
-    const double sigma = options_.odometryYawDriftSigmaDegPer100m * kRadPerMetrePerDegPer100m;
-    impl_->problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma}), nullptr,
-                                    &impl_->zeroYawDrift, &impl_->yawDrift);
-    impl_->problem.SetParameterBlockConstant(&impl_->zeroYawDrift);
-  } else {
-    impl_->problem.SetParameterBlockConstant(&impl_->yawDrift);
-  }
 }
 
 double* PoseGraph::addMapOffsetState(size_t i, double sigma) {
@@ -61,27 +44,6 @@ double* PoseGraph::addMapOffsetState(size_t i, double sigma) {
   return offset;
 }
 
-bool PoseGraph::scaleIsState() const { return options_.odometryScaleSigma > 0.0; }
-
-bool PoseGraph::yawDriftIsState() const { return options_.odometryYawDriftSigmaDegPer100m > 0.0; }
-
-double* PoseGraph::scaleBlock(size_t i) const {
-  const bool shared = !scaleIsState() || options_.odometryScaleSigmaPerSqrtM == 0.0;
-  return impl_->scale[shared ? 0 : i].get();
-}
-
-void PoseGraph::addScaleState() {
-  const bool first = impl_->scale.empty();
-  if (!first && (!scaleIsState() || options_.odometryScaleSigmaPerSqrtM == 0.0)) return;
-  impl_->scale.push_back(std::make_unique<double>(first ? 0.0 : *impl_->scale.back()));
-  impl_->problem.AddParameterBlock(impl_->scale.back().get(), 1);
-  if (first && scaleIsState()) {
-    auto* cost = new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{options_.odometryScaleSigma});
-    impl_->problem.AddResidualBlock(cost, nullptr, &impl_->zeroScale, impl_->scale.back().get());
-    impl_->problem.SetParameterBlockConstant(&impl_->zeroScale);
-  }
-}
-
 PoseGraph::~PoseGraph() = default;
 
 size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial) { return addKeyframe(timestampNs, initial, initial); }
@@ -94,26 +56,23 @@ size_t PoseGraph::addKeyframe(int64_t timestampNs, const SE3& initial, const SE3
   initial_.push_back(initial);
   impl_->q.push_back(std::make_unique<Eigen::Quaterniond>(Eigen::Quaterniond(start.rotation()).normalized()));
   impl_->t.push_back(std::make_unique<Eigen::Vector3d>(start.translation()));
-  impl_->hasPrior.push_back(false);
   impl_->routeMetres.push_back(impl_->routeMetres.empty() ? 0.0 : impl_->routeMetres.back());
   impl_->problem.AddParameterBlock(impl_->q.back()->coeffs().data(), 4, new ceres::EigenQuaternionManifold);
   impl_->problem.AddParameterBlock(impl_->t.back()->data(), 3);
-  addScaleState();
+  if (timestamps_.size() == 1) {  // the gauge: the first keyframe is the given start
+    impl_->problem.SetParameterBlockConstant(impl_->q.back()->coeffs().data());
+    impl_->problem.SetParameterBlockConstant(impl_->t.back()->data());
+  }
   return timestamps_.size() - 1;
 }
 
 void PoseGraph::addOdometry(size_t i, size_t j, const SE3& iTj, const Matrix6d& information) {
   if (i >= size() || j >= size() || i == j) throw Error("pose graph", "odometry between unknown keyframes");
   if (j == i + 1) impl_->routeMetres[j] = impl_->routeMetres[i] + iTj.translation().norm();
-  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3, 1, 1>(
+  auto* cost = new ceres::AutoDiffCostFunction<BetweenFactor, 6, 4, 3, 4, 3>(
       new BetweenFactor(iTj, sqrtInformation<6>(information)));
   impl_->problem.AddResidualBlock(cost, nullptr, impl_->q[i]->coeffs().data(), impl_->t[i]->data(),
-                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data(), scaleBlock(i), &impl_->yawDrift);
-  if (scaleBlock(i) != scaleBlock(j)) {
-    const double sigma = options_.odometryScaleSigmaPerSqrtM * std::sqrt(std::max(iTj.translation().norm(), 1e-3));
-    auto* step = new ceres::AutoDiffCostFunction<ScaleStep, 1, 1, 1>(new ScaleStep{sigma});
-    impl_->problem.AddResidualBlock(step, nullptr, scaleBlock(i), scaleBlock(j));
-  }
+                                  impl_->q[j]->coeffs().data(), impl_->t[j]->data());
 }
 
 void PoseGraph::addPrior(size_t i, const PosePrior& prior) {
@@ -124,43 +83,17 @@ void PoseGraph::addPrior(size_t i, const PosePrior& prior) {
   auto* cost = new ceres::AutoDiffCostFunction<PriorFactor, 4, 4, 3, 2>(new PriorFactor(p.pose, sqrtInformation<4>(p.information)));
   impl_->problem.AddResidualBlock(cost, new ceres::HuberLoss(options_.priorHuber), impl_->q[i]->coeffs().data(),
                                   impl_->t[i]->data(), offset);
-  impl_->hasPrior[i] = true;
 }
 
-SolveSummary PoseGraph::solve(bool incremental) {
+SolveSummary PoseGraph::solve() {
   SolveSummary summary;
   if (size() == 0) return summary;
-  ceres::Problem& p = impl_->problem;
-  // Gauge: without any prior, the first keyframe anchors the graph.
-  const bool anyPrior = std::any_of(impl_->hasPrior.begin(), impl_->hasPrior.end(), [](bool b) { return b; });
-  for (size_t i = 0; i < size(); ++i) {
-    const bool fixed = (i == 0 && (options_.fixFirst || !anyPrior)) ||
-                       (incremental && options_.incrementalWindow > 0 && i + size_t(options_.incrementalWindow) < size());
-    double* blocks[2] = {impl_->q[i]->coeffs().data(), impl_->t[i]->data()};
-    for (double* b : blocks) {
-      if (fixed) {
-        p.SetParameterBlockConstant(b);
-      } else {
-        p.SetParameterBlockVariable(b);
-      }
-    }
-  }
-  for (size_t i = 0; i < impl_->scale.size(); ++i) {
-    const bool fixed = !scaleIsState() ||
-                       (incremental && options_.incrementalWindow > 0 && impl_->scale.size() > 1 &&
-                        i + size_t(options_.incrementalWindow) < size());
-    if (fixed) {
-      p.SetParameterBlockConstant(impl_->scale[i].get());
-    } else {
-      p.SetParameterBlockVariable(impl_->scale[i].get());
-    }
-  }
   ceres::Solver::Options o;
   o.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   o.max_num_iterations = options_.maxIterations;
   o.num_threads = 1;  // deterministic
   ceres::Solver::Summary s;
-  ceres::Solve(o, &p, &s);
+  ceres::Solve(o, &impl_->problem, &s);
   summary.iterations = int(s.iterations.size());
   summary.initialCost = s.initial_cost;
   summary.finalCost = s.final_cost;
@@ -172,13 +105,6 @@ SE3 PoseGraph::pose(size_t i) const {
   if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
   return makeSE3(*impl_->q[i], *impl_->t[i]);
 }
-
-double PoseGraph::odometryScale(size_t i) const {
-  if (i >= size()) throw Error("pose graph", "no keyframe " + std::to_string(i));
-  return *scaleBlock(i);
-}
-
-double PoseGraph::odometryYawDrift() const { return impl_->yawDrift / kRadPerMetrePerDegPer100m; }
 
 std::vector<SE3> PoseGraph::poses() const {
   std::vector<SE3> out;

@@ -3,9 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/QR>
-
 #include "engine/geom/se2.h"
 #include "engine/map/ground_height.h"
 #include "engine/match/match_result.h"
@@ -14,14 +11,6 @@ namespace hdprior {
 
 double priorAltitude(const GroundHeight& ground, double x, double y, double egoHeight) {
   return ground.bilinearAt(Eigen::Vector2d(x, y)) + egoHeight;
-}
-
-Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options) {
-  const Eigen::Matrix3d observed = observedProjector(information);
-  const double yaw = options.minSigmaYawDeg * std::numbers::pi / 180.0;
-  const Eigen::Matrix3d floor = Eigen::Vector3d(options.minSigmaXY * options.minSigmaXY, options.minSigmaXY * options.minSigmaXY, yaw * yaw).asDiagonal();
-  const Eigen::Matrix3d covariance = information.completeOrthogonalDecomposition().pseudoInverse() + observed * floor * observed;
-  return observed * covariance.completeOrthogonalDecomposition().pseudoInverse() * observed;
 }
 
 PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const GroundHeight& ground,
@@ -39,11 +28,7 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   // Match information is over (x, y, yaw); reorder to (yaw, x, y) and add z.
   const int order[3] = {1, 2, 0};  // match index -> prior index
   const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
-  Eigen::Matrix3d information = withVarianceAlong(flooredInformation(match.informationGivenMap, options), along, options.alongTrackSigma);
-  if (!options.alongTrack) {
-    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - along * along.transpose();
-    information = P * information * P;
-  }
+  const Eigen::Matrix3d information = withVarianceAlong(match.informationGivenMap, along, options.alongTrackSigma);
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) prior.information(order[r], order[c]) = information(r, c);
   }

@@ -23,17 +23,9 @@ struct PosePrior {
 struct PosePriorOptions {
   double egoHeight = 0.32;      // the ego origin above the ground surface (Argoverse: about 0.32 m)
   double altitudeSigma = 0.10;  // metres: the ground-height raster's accuracy at a known (x, y)
-  // Added to the match's covariance in the directions it observes: the Laplace covariance of an NDT
-  // match counts every road point as an independent observation and misses its biases.
-  double minSigmaXY = 0.0;       // metres
-  double minSigmaYawDeg = 0.0;
   // Added to the match's variance along the vehicle's heading: junction matches, the only ones that
-  // observe it, are metres off along the road while their Laplace sigma says centimetres
-  // (docs/experiments/2026-12-02-eleven-log-evaluation.md).
+  // observe it, are metres off along the road while their Laplace sigma says centimetres.
   double alongTrackSigma = 1.0;  // metres; 0 adds nothing
-  // false: the prior constrains only the lateral position and yaw (and z), never the position along
-  // the vehicle's heading, where NDT matches against a road's drivable area are weakest.
-  bool alongTrack = true;
   // A match goes into the graph only if its innovation against the prediction is below this quantile
   // of chi-square (engine/pipeline/innovation_gate.h); 0: every match that is not rejected goes in.
   double innovationGateProbability = 0.99;
@@ -56,10 +48,6 @@ PosePrior withIndependentMapError(const PosePrior& prior);
 // The altitude z* of the ego origin at (x, y): ground height (bilinear) plus egoHeight; NaN
 // outside the raster's region of interest.
 double priorAltitude(const GroundHeight& ground, double x, double y, double egoHeight);
-
-// The match's information over (x, y, yaw) with the options' floors added to its covariance in the
-// directions the match observes; unobservable directions keep zero information.
-Eigen::Matrix3d flooredInformation(const Eigen::Matrix3d& information, const PosePriorOptions& options);
 
 // Builds the prior from a match (its estimate and information over x, y, yaw) and the
 // odometry pose that supplies roll and pitch, and the place in the directions the match does not

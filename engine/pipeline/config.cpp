@@ -163,7 +163,6 @@ std::vector<Section> schemaOf(Config& c) {
       {"graph",
        {{"prior_huber", &gr.priorHuber, "(0, 1000000]", "", "Huber loss on the prior residuals, whitened"},
         {"max_iterations", &gr.maxIterations, "[1, 10000]", "", "Ceres iterations per solve"},
-        {"incremental_window", &gr.incrementalWindow, "[0, 1000000]", "", "incremental solves free only the last N keyframes (0: all)"},
         {"odometry_translation_sigma_per_m", &gr.odometryTranslationSigmaPerM, "(0, 10]", "m/m", "the built-in odometry's drift model, per metre travelled"},
         {"odometry_rotation_sigma_deg_per_m", &gr.odometryRotationSigmaDegPerM, "(0, 180]", "deg/m", "the same in rotation"},
         {"given_odometry_translation_sigma_per_m", &gr.givenOdometryTranslationSigmaPerM, "(0, 10]", "m/m", "the drift model of a trajectory file (run --odometry)"},

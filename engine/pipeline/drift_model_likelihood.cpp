@@ -13,13 +13,9 @@ namespace {
 std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOptions& configured) {
   std::vector<double> lengths{configured.mapErrorLength};
   if (configured.mapErrorLength > 0.0) lengths.push_back(0.0);
-  std::vector<double> yawDrifts{0.0};
-  if (configured.odometryYawDriftSigmaDegPer100m > 0.0) yawDrifts.push_back(configured.odometryYawDriftSigmaDegPer100m);
   std::vector<DriftModelLikelihood::Candidate> out;
-  for (double yawDrift : yawDrifts) {
-    for (double length : lengths) {
-      for (double factor : {1.0, 3.0, 10.0, 30.0, 100.0}) out.push_back({factor, length, yawDrift});
-    }
+  for (double length : lengths) {
+    for (double factor : {1.0, 3.0, 10.0, 30.0, 100.0}) out.push_back({factor, length});
   }
   return out;
 }
@@ -28,7 +24,7 @@ std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOption
 
 DriftModelLikelihood::DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start)
     : configured_(configured), candidates_(candidatesFor(configured)) {
-  for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength, c.yawDriftSigmaDegPer100m);
+  for (const Candidate& c : candidates_) filters_.emplace_back(start, c.mapErrorLength);
 }
 
 PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
@@ -36,7 +32,6 @@ PoseGraphOptions DriftModelLikelihood::candidate(size_t i) const {
   o.odometryTranslationSigmaPerM *= candidates_[i].factor;
   o.odometryRotationSigmaDegPerM *= candidates_[i].factor;
   o.mapErrorLength = candidates_[i].mapErrorLength;
-  o.odometryYawDriftSigmaDegPer100m = candidates_[i].yawDriftSigmaDegPer100m;
   return o;
 }
 
@@ -70,15 +65,11 @@ std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() cons
 size_t DriftModelLikelihood::pick() const {
   double best = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates_) best = std::max(best, c.logLikelihood);
-  // Within the margin the simpler model: no yaw drift state, then the least drift.
-  const auto simpler = [](const Candidate& a, const Candidate& b) {
-    return a.yawDriftSigmaDegPer100m != b.yawDriftSigmaDegPer100m ? a.yawDriftSigmaDegPer100m < b.yawDriftSigmaDegPer100m
-                                                                   : a.factor < b.factor;
-  };
+  // Within the margin the least drift.
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
     if (candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
-    if (pick == candidates_.size() || simpler(candidates_[i], candidates_[pick])) pick = i;
+    if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
   }
   return pick;
 }

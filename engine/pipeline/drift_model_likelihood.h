@@ -12,21 +12,16 @@ namespace hdprior {
 struct Keyframe;
 
 // How far the odometry drifts, as the priors see it. The graph's drift model (per-metre sigmas)
-// decides how far the priors may move the odometry, and one model cannot serve every log: the
-// built-in odometry drifts 0.06-0.32 % on the tuning family's logs. Each candidate model (the
-// configured per-metre sigmas times a factor) runs a planar Kalman filter from the start over the
-// odometry steps and the priors the graph takes; the candidate under which the priors were likeliest
-// (the product of their innovation densities) is the model for the final solve. The configured model
-// is the least drift a candidate assumes: the priors' sigmas are wide (median NEES 0.01-0.05), and
-// under wide sigmas a small drift is invisible, so a tighter model would always look likelier
-// (with 0.1x allowed, a run with 0.7 % injected drift chose 0.07 % and kept all of its error).
+// decides how far the priors may move the odometry, and one model cannot serve every log. Each
+// candidate model (the configured per-metre sigmas times a factor) runs a planar Kalman filter from
+// the start over the odometry steps and the priors the graph takes; the candidate under which the
+// priors were likeliest (the product of their innovation densities) is the model for the final
+// solve. The configured model is the least drift a candidate assumes: the priors' sigmas are wide,
+// and under wide sigmas a small drift is invisible, so a tighter model would always look likelier.
 // With a map error length the filters carry the map's offset as the graph does, so that a run of
 // priors sharing one map error is not read as drift; each factor is then tried with the map error
 // as that field and as independent per prior (a map better than its sigma, where the field would
-// take a real drift for the map's), and the final solve takes the map error model too. With a yaw
-// drift sigma configured (PoseGraphOptions::odometryYawDriftSigmaDegPer100m) each is tried with and
-// without the odometry's yaw drift as a state, and the final solve takes the state only where it is
-// likelier by the margin.
+// take a real drift for the map's), and the final solve takes the map error model too.
 class DriftModelLikelihood {
  public:
   DriftModelLikelihood(const PoseGraphOptions& configured, const Eigen::Vector3d& start);
@@ -43,7 +38,6 @@ class DriftModelLikelihood {
   struct Candidate {
     double factor = 1.0;          // times the configured per-metre sigmas
     double mapErrorLength = 0.0;  // the configured one, or 0 (independent)
-    double yawDriftSigmaDegPer100m = 0.0;  // the configured one (the yaw drift a state), or 0 (none)
     double logLikelihood = 0.0;   // of the priors so far, under this candidate (nats)
     bool chosen = false;          // the one likeliest() picks
   };

@@ -55,8 +55,6 @@ struct PipelineRun {
   PoseTrajectory optimized;         // with priors: every sweep corrected by the pose graph; else empty
   std::vector<KeyframeMatch> matches;  // with priors: one per keyframe
   std::vector<SE3> optimizedKeyframes;
-  std::vector<double> odometryScales;  // with priors: the graph's estimate of the odometry's scale error per keyframe
-  double odometryYawDrift = 0.0;       // with priors: the graph's estimate of its yaw drift, deg per 100 m (0 without the state)
   SolveSummary finalSolve;
   std::vector<Eigen::Vector3f> mapPoints;  // voxelised keyframe sweeps at the final poses, city frame
   std::vector<float> mapIntensity;

@@ -32,13 +32,9 @@ double chiSquareQuantile(double probability, int dof) {
   return 0.5 * (lo + hi);
 }
 
-PlanarKalman::PlanarKalman(const Eigen::Vector3d& start, double mapErrorLength, double yawDriftSigmaDegPer100m)
-    : mapErrorLength_(mapErrorLength) {
+PlanarKalman::PlanarKalman(const Eigen::Vector3d& start, double mapErrorLength) : mapErrorLength_(mapErrorLength) {
   state_.head<3>() = start;
-  covariance_(5, 5) = std::pow(yawDriftSigmaDegPer100m * kRadPerMetrePerDegPer100m, 2);
 }
-
-double PlanarKalman::yawDriftDegPer100m() const { return state_(5) / kRadPerMetrePerDegPer100m; }
 
 void PlanarKalman::predict(const SE3& previousTThis, const Matrix6d& stepInformation) {
   const Eigen::Vector3d pose = mean();
@@ -47,10 +43,9 @@ void PlanarKalman::predict(const SE3& previousTThis, const Matrix6d& stepInforma
   rotation << c, -s, 0, s, c, 0, 0, 0, 1;
   const Eigen::Vector2d t = rotation.topLeftCorner<2, 2>() * previousTThis.translation().head<2>();
   const double metres = previousTThis.translation().head<2>().norm();
-  Matrix6d F = Matrix6d::Identity();  // d(next state) / d(this state): the map offset and the yaw drift stay
+  Matrix5d F = Matrix5d::Identity();  // d(next state) / d(this state): the map offset stays
   F(0, 2) = -t.y();
   F(1, 2) = t.x();
-  F(2, 5) = -metres;
   const Matrix6d step = stepInformation.inverse();  // residual order [rx, ry, rz, tx, ty, tz]
   const int planar[3] = {3, 4, 2};
   Eigen::Matrix3d Q;
@@ -58,8 +53,7 @@ void PlanarKalman::predict(const SE3& previousTThis, const Matrix6d& stepInforma
     for (int k = 0; k < 3; ++k) Q(r, k) = step(planar[r], planar[k]);
   covariance_ = F * covariance_ * F.transpose();
   covariance_.topLeftCorner<3, 3>() += rotation * Q * rotation.transpose();
-  state_.head<3>() = offsetPose(pose, {previousTThis.translation().x(), previousTThis.translation().y(),
-                                       yawOf(previousTThis) - state_(5) * metres});
+  state_.head<3>() = offsetPose(pose, {previousTThis.translation().x(), previousTThis.translation().y(), yawOf(previousTThis)});
   metresSinceOffset_ += metres;
 }
 
@@ -78,8 +72,8 @@ PlanarKalman::State PlanarKalman::atPrior(double mapSigma) const {
 namespace {
 
 // What a prior observes of the state: the pose, plus the map offset in x, y when it carries one.
-Eigen::Matrix<double, 3, 6> observation(bool withOffset) {
-  Eigen::Matrix<double, 3, 6> J = Eigen::Matrix<double, 3, 6>::Zero();
+Eigen::Matrix<double, 3, 5> observation(bool withOffset) {
+  Eigen::Matrix<double, 3, 5> J = Eigen::Matrix<double, 3, 5>::Zero();
   J.leftCols<3>().setIdentity();
   if (withOffset) J.block<2, 2>(0, 3).setIdentity();
   return J;
@@ -102,7 +96,7 @@ PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, 
   }
   n.mapSigma = mapErrorLength_ > 0.0 && mapSigma > 0.0 ? mapSigma : 0.0;
   const State s = atPrior(n.mapSigma);
-  const Eigen::Matrix<double, 3, 6> J = observation(n.mapSigma > 0.0);
+  const Eigen::Matrix<double, 3, 5> J = observation(n.mapSigma > 0.0);
   Eigen::Vector3d d = prior - J * s.mean;
   d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
   const int k = n.dof;
@@ -131,7 +125,7 @@ void PlanarKalman::update(const Innovation& n) {
   const Eigen::MatrixXd S = n.S.topLeftCorner(k, k);
   const Eigen::MatrixXd K = s.covariance * H.transpose() * S.inverse();
   state_ = s.mean + K * n.y.head(k);
-  const Matrix6d P = (Matrix6d::Identity() - K * H) * s.covariance;
+  const Matrix5d P = (Matrix5d::Identity() - K * H) * s.covariance;
   covariance_ = 0.5 * (P + P.transpose());
   if (n.mapSigma > 0.0) {
     hasMapOffset_ = true;

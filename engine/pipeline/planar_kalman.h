@@ -16,24 +16,19 @@ inline const Eigen::Matrix3d kForgottenPose = Eigen::Vector3d(1e4, 1e4, 2.467401
 
 // A Kalman filter over the planar pose (x, y, yaw, city frame) of the latest keyframe: odometry steps
 // move it and grow its covariance, HD-map priors (possibly singular information) correct it. The prior
-// stage runs one to gate priors against the graph's prediction (InnovationGate mode: the mean is set
-// to the graph's pose before each step) and one per candidate drift model to weigh the models by
-// how well they predict the priors (DriftModelLikelihood).
+// stage runs one to gate priors against the graph's prediction (InnovationGate: the mean is set to
+// the graph's pose before each step) and one per candidate drift model to weigh the models by how
+// well they predict the priors (DriftModelLikelihood).
 //
-// With a map error length (the pose graph's PoseGraphOptions::mapErrorLength) the state also carries
-// the map's 2-D offset at the latest prior, a Gauss-Markov field along the route as in the graph: a
-// prior then observes pose + offset with its information given the map, and priors that share one
-// map error are not taken for independent evidence. Without it a prior's map error is its own, in
-// the information the caller passes.
-//
-// With a yaw drift sigma (the graph's PoseGraphOptions::odometryYawDriftSigmaDegPer100m) the state
-// also carries the odometry's yaw drift b, radians per metre, one value for the run: each step's
-// heading is taken as the odometry's minus b times its length.
+// With a map error length (PoseGraphOptions::mapErrorLength) the state also carries the map's 2-D
+// offset at the latest prior, a Gauss-Markov field along the route as in the graph: a prior then
+// observes pose + offset with its information given the map, and priors that share one map error
+// are not taken for independent evidence. Without it a prior's map error is its own, in the
+// information the caller passes.
 class PlanarKalman {
  public:
   // The start: the run's given first pose (the graph holds it fixed), zero covariance.
-  explicit PlanarKalman(const Eigen::Vector3d& start = Eigen::Vector3d::Zero(), double mapErrorLength = 0.0,
-                        double yawDriftSigmaDegPer100m = 0.0);
+  explicit PlanarKalman(const Eigen::Vector3d& start = Eigen::Vector3d::Zero(), double mapErrorLength = 0.0);
 
   void setMean(const Eigen::Vector3d& mean) { state_.head<3>() = mean; }
   // The pose's covariance grown by `poseCovariance` (x, y, yaw): what the mean says is trusted less.
@@ -66,19 +61,19 @@ class PlanarKalman {
   Eigen::Vector3d mean() const { return state_.head<3>(); }
   Eigen::Matrix3d covariance() const { return covariance_.topLeftCorner<3, 3>(); }
   Eigen::Vector2d mapOffset() const { return state_.segment<2>(3); }
-  double yawDriftDegPer100m() const;
 
  private:
-  using Vector6d = Eigen::Matrix<double, 6, 1>;
+  using Vector5d = Eigen::Matrix<double, 5, 1>;
+  using Matrix5d = Eigen::Matrix<double, 5, 5>;
   struct State {
-    Vector6d mean;
-    Matrix6d covariance;
+    Vector5d mean;
+    Matrix5d covariance;
   };
   // The state with the map offset carried on to a prior of map sigma `mapSigma` here.
   State atPrior(double mapSigma) const;
 
-  Vector6d state_ = Vector6d::Zero();  // x, y, yaw, map offset x, y, yaw drift
-  Matrix6d covariance_ = Matrix6d::Zero();
+  Vector5d state_ = Vector5d::Zero();  // x, y, yaw, map offset x, y
+  Matrix5d covariance_ = Matrix5d::Zero();
   double mapErrorLength_ = 0.0;
   bool hasMapOffset_ = false;
   double metresSinceOffset_ = 0.0;

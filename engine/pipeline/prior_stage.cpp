@@ -74,7 +74,7 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   if (graph_->size() == 0) {
     gate_ = InnovationGate(planarPose(m.predicted), config_.graph.mapErrorLength, config_.prior.innovationGateProbability,
                            config_.prior.reanchorPriors);
-    if (config_.graph.estimateDriftModel) driftModels_.emplace(config_.graph, planarPose(m.predicted));
+    driftModels_.emplace(config_.graph, planarPose(m.predicted));
   } else {
     gate_.predict(planarPose(graph_->pose(graph_->size() - 1)), kf.previousTThis, odometryInfo);
     if (driftModels_) driftModels_->step(kf);
@@ -103,26 +103,24 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   if (m.hasPrior && !reanchored) graph_->addPrior(k, m.prior);
   matches_.push_back(std::move(m));
   if (reanchored) rebuild(odometry);  // the run's priors and this one go in, in route order (the map error field's)
-  graph_->solve(true);
+  graph_->solve();
   times_.graphS += secondsSince(start);
 }
 
 SolveSummary PriorStage::finish(const Odometry& odometry) {
   const auto start = std::chrono::steady_clock::now();
-  if (driftModels_ && config_.graph.estimateDriftModel) {
+  if (driftModels_) {
     const PoseGraphOptions likeliest = driftModels_->likeliest();
     if (likeliest.odometryTranslationSigmaPerM != config_.graph.odometryTranslationSigmaPerM ||
         likeliest.odometryRotationSigmaDegPerM != config_.graph.odometryRotationSigmaDegPerM ||
-        likeliest.mapErrorLength != config_.graph.mapErrorLength ||
-        likeliest.odometryYawDriftSigmaDegPer100m != config_.graph.odometryYawDriftSigmaDegPer100m) {
+        likeliest.mapErrorLength != config_.graph.mapErrorLength) {
       config_.graph.odometryTranslationSigmaPerM = likeliest.odometryTranslationSigmaPerM;
       config_.graph.odometryRotationSigmaDegPerM = likeliest.odometryRotationSigmaDegPerM;
       config_.graph.mapErrorLength = likeliest.mapErrorLength;
-      config_.graph.odometryYawDriftSigmaDegPer100m = likeliest.odometryYawDriftSigmaDegPer100m;
       rebuild(odometry);
     }
   }
-  const SolveSummary s = graph_->solve(false);
+  const SolveSummary s = graph_->solve();
   times_.graphS += secondsSince(start);
   return s;
 }

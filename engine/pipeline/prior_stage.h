@@ -70,7 +70,7 @@ class PriorStage {
 
   // The odometry's newest keyframe; sweepOf loads the sweep of an odometry frame.
   void addKeyframe(const Odometry& odometry, const SweepOf& sweepOf);
-  // The final batch solve; with graph.estimate_drift_model, under the drift model the priors made likeliest.
+  // The final batch solve, under the drift model the priors made likeliest (DriftModelLikelihood).
   SolveSummary finish(const Odometry& odometry);
   // Rebuilds the graph from the keyframes and matches so far with other prior and graph options
   // (priors re-made from the same matches), warm-started from the current poses; does not solve.
@@ -81,7 +81,7 @@ class PriorStage {
   const PriorStageTimes& times() const { return times_; }
   // The graph options in use: the configuration's, with the source's drift model covering odometry.drift.
   const PoseGraphOptions& graphOptions() const { return config_.graph; }
-  // The drift models the priors were weighed under (empty unless graph.estimate_drift_model).
+  // The drift models the priors were weighed under (empty before the first keyframe).
   std::vector<DriftModelLikelihood::Candidate> driftModelCandidates() const {
     return driftModels_ ? driftModels_->scored() : std::vector<DriftModelLikelihood::Candidate>{};
   }

@@ -108,7 +108,6 @@ json keyframesJson(const PipelineRun& run) {
               {"city_T_ego", poseJson(run.cityTOdom * kf.odomTEgo)}, {"previous_T_this", poseJson(kf.previousTThis)},
               {"relative_covariance_v_w", cov}, {"submap_frames", submapSweeps}};
     if (k < run.optimizedKeyframes.size()) j["optimized_city_T_ego"] = poseJson(run.optimizedKeyframes[k]);
-    if (k < run.odometryScales.size()) j["odometry_scale_error"] = run.odometryScales[k];
     if (k < run.matches.size()) j["match"] = matchJson(run.matches[k]);
     if (k < diagnostics.size()) j["diagnostics"] = diagnosticsJson(diagnostics[k]);
     if (k < run.matches.size() && run.groundTruth.covers(kf.timestampNs)) {
@@ -140,18 +139,13 @@ json driftJson(const OdometryDrift& d) {
 // The drift model in use and, when it was estimated, every candidate's log-likelihood: a pick that
 // won by a fraction of a nat is noise, and the user should see that.
 json driftModelJson(const PoseGraphOptions& g, const std::vector<DriftModelLikelihood::Candidate>& candidates) {
-  json out = {{"translation_sigma_m", g.odometryTranslationSigma}, {"rotation_sigma_deg", g.odometryRotationSigmaDeg},
-              {"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
-              {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"scale_sigma", g.odometryScaleSigma},
-              {"scale_sigma_per_sqrt_m", g.odometryScaleSigmaPerSqrtM},
-              {"yaw_drift_sigma_deg_per_100m", g.odometryYawDriftSigmaDegPer100m}, {"odometry_covariance", g.odometryCovariance},
-              {"estimated", g.estimateDriftModel}, {"margin_nats", g.driftModelMarginNats},
+  json out = {{"translation_sigma_per_m", g.odometryTranslationSigmaPerM},
+              {"rotation_sigma_deg_per_m", g.odometryRotationSigmaDegPerM}, {"margin_nats", g.driftModelMarginNats},
               {"map_error_length_m", g.mapErrorLength}};
   if (!candidates.empty()) {
     json list = json::array();
     for (const auto& c : candidates) {
-      list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength},
-                      {"yaw_drift_sigma_deg_per_100m", c.yawDriftSigmaDegPer100m}, {"log_likelihood", c.logLikelihood},
+      list.push_back({{"factor", c.factor}, {"map_error_length_m", c.mapErrorLength}, {"log_likelihood", c.logLikelihood},
                       {"chosen", c.chosen}});
     }
     out["candidates"] = list;
@@ -196,8 +190,6 @@ json metricsJson(const ArgoverseLog& log, const PipelineRun& run, const RunMetri
                     {"summary", constraintSummary(metrics.matches.constraints)}};
     for (const auto& [category, n] : countConstraints(metrics.matches.constraints)) m["matches"]["constraints"][category] = n;
     m["odometry_drift_model"] = driftModelJson(run.graphOptions, run.driftModelCandidates);
-    if (!run.odometryScales.empty()) m["odometry_scale_error"] = run.odometryScales.back();
-    if (run.graphOptions.odometryYawDriftSigmaDegPer100m > 0) m["odometry_yaw_drift_deg_per_100m"] = run.odometryYawDrift;
     m["prior_calibration"] = calibrationJson(metrics.priorCalibration);
     m["final_solve"] = {{"iterations", run.finalSolve.iterations}, {"initial_cost", run.finalSolve.initialCost},
                         {"final_cost", run.finalSolve.finalCost}, {"converged", run.finalSolve.converged}};

@@ -202,8 +202,6 @@ PipelineRun Session::finish(double mapVoxel) {
     run.driftModelCandidates = priors_->driftModelCandidates();
     run.optimized = optimizedTrajectory();
     run.optimizedKeyframes = priors_->graph().poses();
-    for (size_t k = 0; k < priors_->graph().size(); ++k) run.odometryScales.push_back(priors_->graph().odometryScale(k));
-    run.odometryYawDrift = priors_->graph().odometryYawDrift();
     run.matches = priors_->matches();
   }
   run.times = times_;

@@ -11,8 +11,6 @@
 //   lateral+yaw@all    a truth prior at every keyframe, lateral 0.1 m and yaw 0.2 deg, along free:
 //                      the most a road's drivable area can say between junctions;
 //   all@all            every keyframe, along 0.1 m too (the graph's floor).
-// Each also with the odometry scale state on (graph.odometry_scale_sigma 0.01), and with the yaw drift
-// state too (graph.odometry_yaw_drift_sigma_deg_per_100m 1), and with the yaw drift state alone.
 // With SIGMA:BIAS arguments, J once for each (BIAS: a shared error of the fixes one junction gives, the
 // matcher's are all ahead at the tuning logs' starting junction). Default: 0.2:0.
 // PROBE_ODOMETRY_DIR=D takes the odometry from D/<log id>.tum, as `hdprior run --odometry` does.
@@ -63,7 +61,7 @@ double alongInformation(const PosePrior& p, double yaw) {
 using PriorOf = std::function<std::optional<PosePrior>(size_t k)>;
 
 struct Ate {
-  double rmse = 0, along = 0, lateral = 0, scale = 0, yawDrift = 0, cost = 0;
+  double rmse = 0, along = 0, lateral = 0, cost = 0;
   size_t priors = 0;
 };
 
@@ -98,12 +96,10 @@ Ate solveWith(const PipelineRun& run, PoseGraphOptions options, const PriorOf& p
       ++a.priors;
     }
   }
-  const SolveSummary solved = graph.solve(false);
+  const SolveSummary solved = graph.solve();
   const size_t priors = a.priors;
   a = keyframeAte(graph.poses(), truth);
   a.priors = priors;
-  a.scale = graph.odometryScale(graph.size() - 1);
-  a.yawDrift = graph.odometryYawDrift();
   a.cost = solved.finalCost;
   return a;
 }
@@ -189,18 +185,11 @@ int main(int argc, char** argv) try {
   }
   variants.emplace_back("lateral+yaw@all", lateralYawAll);
   variants.emplace_back("all@all", allAll);
-  const char* stateNames[] = {"", "scale", "scale+yaw", "yaw"};
-  for (int states = 0; states < 4; ++states) {  // none, the scale, the scale and the yaw drift, the yaw drift
-    PoseGraphOptions options = run.graphOptions;
-    if (states == 1 || states == 2) options.odometryScaleSigma = 0.01;
-    if (states >= 2) options.odometryYawDriftSigmaDegPer100m = 1.0;
-    for (const auto& [name, priorOf] : variants) {
-      const Ate a = solveWith(run, options, priorOf, truth);
-      std::printf("%-18s %6zu %8.3f %8.3f %8.3f", name.c_str(), a.priors, a.rmse, a.along, a.lateral);
-      if (states > 0) std::printf("  %s %+.4f %+.3f", stateNames[states], a.scale, a.yawDrift);
-      if (std::getenv("PROBE_COST")) std::printf("  cost %.2f", a.cost);
-      std::printf("\n");
-    }
+  for (const auto& [name, priorOf] : variants) {
+    const Ate a = solveWith(run, run.graphOptions, priorOf, truth);
+    std::printf("%-18s %6zu %8.3f %8.3f %8.3f", name.c_str(), a.priors, a.rmse, a.along, a.lateral);
+    if (std::getenv("PROBE_COST")) std::printf("  cost %.2f", a.cost);
+    std::printf("\n");
   }
   return 0;
 } catch (const hdprior::Error& e) {

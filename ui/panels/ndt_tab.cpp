@@ -63,10 +63,6 @@ bool drawMatcher(AppState& state) {
   if (ImGui::Combo("backend", &backend, backends, 2)) m.backend = MatchBackend(backend), changed = true;
   changed |= slider("outlier ratio", m.outlierRatio, 0.05, 0.95);
   changed |= sliderInt("iterations", m.maxIterations, 1, 100);
-  changed |= slider("step (cells)", m.maxStepCells, 0.05, 2.0);
-  changed |= slider("step yaw (deg)", m.maxStepYawDeg, 0.1, 10.0, "%.1f");
-  changed |= slider("max step gain", m.maxStepGain, 1.0, 16.0, "%.1f");
-  changed |= sliderInt("coarse stride", m.maxCoarseStride, 1, 16);
   changed |= slider("time budget (ms)", m.timeBudgetMs, 1.0, 500.0, "%.0f");
   changed |= slider("curb huber (m)", m.curbHuber, 0.01, 1.0);
   changed |= slider("curb max dist (m)", m.curbMaxDistance, 0.1, 3.0);
@@ -95,8 +91,8 @@ bool drawRoadPoints(AppState& state) {
   changed |= slider("curb step (m)", r.road.maxStep, 0.01, 0.3, "%.3f");
   changed |= slider("step per metre", r.road.stepPerMetre, 0.0, 0.05, "%.3f");
   changed |= slider("max gap (m)", r.road.maxGap, 0.5, 20.0, "%.1f");
-  changed |= slider("lane step (m)", r.road.laneStep, 0.02, 0.3, "%.3f");
-  changed |= slider("lane end length (m)", r.road.laneEndLength, 0.0, 5.0, "%.2f");
+  changed |= slider("gutter rise (m)", r.road.gutterRise, 0.0, 0.1, "%.3f");
+  changed |= slider("seed tolerance (m)", r.road.seedTolerance, 0.02, 0.5, "%.2f");
   changed |= slider("ground plane dist (m)", r.ground.planeDistance, 0.02, 0.5, "%.2f");
   changed |= slider("ground max tilt (deg)", r.ground.maxTiltDeg, 2.0, 45.0, "%.0f");
   return changed;

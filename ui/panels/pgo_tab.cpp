@@ -13,26 +13,21 @@ void sliderD(const char* label, double& value, double min, double max, const cha
   if (ImGui::SliderFloat(label, &v, float(min), float(max), format)) value = v;
 }
 
-
 void drawWeights(AppState& state) {
   PosePriorOptions& p = state.bench().config.prior;
   PoseGraphOptions& g = state.bench().config.graph;
   ImGui::PushItemWidth(150);
   ImGui::Text("HD-map priors");
   sliderD("altitude sigma (m)", p.altitudeSigma, 0.01, 1.0);
-  sliderD("min sigma xy (m)", p.minSigmaXY, 0.0, 1.0);
-  sliderD("min sigma yaw (deg)", p.minSigmaYawDeg, 0.0, 5.0);
-  sliderD("ego height (m)", p.egoHeight, 0.0, 1.0);
+  double egoHeight = p.egoHeight;  // one quantity: the road points' road level follows it (next run)
+  sliderD("ego height (m)", egoHeight, 0.0, 1.0);
+  if (egoHeight != p.egoHeight) setEgoHeight(state.bench().config, egoHeight);
   sliderD("along-track sigma (m)", p.alongTrackSigma, 0.0, 5.0);
-  ImGui::Checkbox("constrain along-track", &p.alongTrack);
   ImGui::Text("robust loss and graph");
   sliderD("prior Huber (sigma)", g.priorHuber, 0.1, 10.0);
   ImGui::SliderInt("max iterations", &g.maxIterations, 1, 200);
-  sliderD("odometry sigma (m)", g.odometryTranslationSigma, 0.0, 0.5, "%.3f");
-  sliderD("odometry sigma (deg)", g.odometryRotationSigmaDeg, 0.0, 2.0, "%.3f");
-  sliderD("odometry sigma per m", g.odometryTranslationSigmaPerM, 0.0, 0.05, "%.4f");
-  sliderD("odometry sigma (deg/m)", g.odometryRotationSigmaDegPerM, 0.0, 0.1, "%.4f");
-  ImGui::Checkbox("fix first keyframe", &g.fixFirst);
+  sliderD("odometry sigma per m", g.odometryTranslationSigmaPerM, 1e-5, 0.05, "%.5f");  // the schema's (0, 10]
+  sliderD("odometry sigma (deg/m)", g.odometryRotationSigmaDegPerM, 1e-5, 0.1, "%.5f");
   ImGui::PopItemWidth();
 }
 

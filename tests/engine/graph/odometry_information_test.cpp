@@ -18,20 +18,17 @@ SE3 forward(double metres) {
 
 }  // namespace
 
-// The drift model: floors plus per-metre sigmas in quadrature, per axis, in [rotation, translation].
-TEST(OdometryInformation, DriftModelAddsPerMetreSigmasInQuadrature) {
+// The drift model: per-metre sigmas times the distance, squared, per axis, in [rotation, translation].
+TEST(OdometryInformation, DriftModelGrowsWithTheDistance) {
   PoseGraphOptions o;
-  o.odometryTranslationSigma = 0.01;
-  o.odometryRotationSigmaDeg = 0.02;
   o.odometryTranslationSigmaPerM = 0.005;
   o.odometryRotationSigmaDegPerM = 0.01;
   const auto v = odometryDriftVariances(2.0, o);
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2) + std::pow(0.02 * kDeg, 2), 1e-18) << i;
-    EXPECT_NEAR(v[3 + i], 0.01 * 0.01 + 0.01 * 0.01, 1e-15) << i;
+    EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2), 1e-18) << i;
+    EXPECT_NEAR(v[3 + i], 0.01 * 0.01, 1e-15) << i;
   }
-  PoseGraphOptions perMetreOnly;  // defaults: no constant floors
-  EXPECT_TRUE(odometryDriftVariances(0.0, perMetreOnly).isZero());
+  EXPECT_TRUE(odometryDriftVariances(0.0, o).isZero());  // no step, no drift
 }
 
 TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
@@ -108,16 +105,6 @@ TEST(OdometryInformation, GivenPosesTakeTheirOwnDriftModel) {
   const Matrix6d information = odometryInformation(Matrix6d::Zero(), step, given);
   EXPECT_NEAR(1.0 / std::sqrt(information(3, 3)), 0.01, 1e-12);  // 0.005 per m over 2 m
   EXPECT_NEAR(1.0 / std::sqrt(information(0, 0)), 0.04 * std::numbers::pi / 180.0, 1e-12);
-}
-
-// Leaving the odometry's own covariance out weighs the built-in odometry as a file is weighed.
-TEST(OdometryInformation, OwnCovarianceCanBeLeftOut) {
-  PoseGraphOptions o;
-  const SE3 step = makeSE3(Eigen::Quaterniond::Identity(), Eigen::Vector3d(2, 0, 0));
-  const Matrix6d own = Matrix6d::Identity() * 1e-6;
-  EXPECT_FALSE(odometryInformation(own, step, o).isApprox(odometryInformation(Matrix6d::Zero(), step, o)));
-  o.odometryCovariance = false;
-  EXPECT_TRUE(odometryInformation(own, step, o).isApprox(odometryInformation(Matrix6d::Zero(), step, o), 0.0));
 }
 
 }  // namespace hdprior

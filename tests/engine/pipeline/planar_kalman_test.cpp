@@ -103,10 +103,9 @@ TEST(PlanarKalman, TheGivenStartAcceptsOnlyMatchesWithinTheirOwnSigma) {
 // Odometry that turns 0.02 deg too far every 2 m (1 deg over 100 m), priors that are right with
 // 0.1 m noise: the likeliest model is one loose enough to let the priors pull the drift out; with an
 // odometry that is right, the tightest.
-DriftModelLikelihood driftRun(double yawBiasPerStep, double marginNats = 0.0, double yawDriftSigmaDegPer100m = 0.0) {
+DriftModelLikelihood driftRun(double yawBiasPerStep, double marginNats = 0.0) {
   PoseGraphOptions configured;  // 1e-4 per metre
   configured.driftModelMarginNats = marginNats;
-  configured.odometryYawDriftSigmaDegPer100m = yawDriftSigmaDegPer100m;
   DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
   Keyframe kf;
   kf.previousTThis = forward(2.0, yawBiasPerStep);
@@ -165,31 +164,6 @@ TEST(DriftModelLikelihood, ScoredShowsEveryCandidateAndTheOneChosen) {
     EXPECT_EQ(chosen, 1) << margin;
     if (margin == 100.0) EXPECT_EQ(run.likeliest().odometryRotationSigmaDegPerM, PoseGraphOptions{}.odometryRotationSigmaDegPerM);
   }
-}
-
-// The same drift (1 deg per 100 m), with the yaw drift allowed as a state: the filter that carries it
-// learns the drift and predicts the priors best, so the final solve takes the state (and no looser
-// per-metre model than the configured one); an odometry that is right keeps neither.
-TEST(DriftModelLikelihood, ASystematicYawDriftIsTakenAsAStateWhereThePriorsShowIt) {
-  const PoseGraphOptions configured;
-  const DriftModelLikelihood drifting = driftRun(0.02 * kDeg, 1.0, 1.0), exact = driftRun(0.0, 1.0, 1.0);
-  EXPECT_EQ(drifting.scored().size(), 20u);  // with and without the state
-  EXPECT_EQ(drifting.likeliest().odometryYawDriftSigmaDegPer100m, 1.0);
-  EXPECT_EQ(drifting.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
-  EXPECT_EQ(exact.likeliest().odometryYawDriftSigmaDegPer100m, 0.0);
-  EXPECT_EQ(exact.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
-}
-
-TEST(PlanarKalman, LearnsTheOdometrysYawDriftFromLateralPriors) {
-  PlanarKalman filter(Eigen::Vector3d::Zero(), 0.0, 2.0);
-  const Matrix6d step = stepInformation(1e-6, 1e-4);
-  const double noise[5] = {0.1, -0.05, 0.08, -0.12, 0.02};
-  for (int k = 1; k <= 100; ++k) {
-    filter.predict(forward(2.0, 0.01 * kDeg), step);  // 0.5 deg per 100 m too far left
-    filter.update(filter.innovation(Eigen::Vector3d(2.0 * k, noise[k % 5], 0.0), lateralInformation(0.1)));
-  }
-  EXPECT_NEAR(filter.yawDriftDegPer100m(), 0.5, 0.1);
-  EXPECT_NEAR(filter.mean().z(), 0.0, 0.05 * kDeg);
 }
 
 // An odometry sure of itself (0.15 deg / 100 m) along +x and lateral priors that all sit 0.25 m to the left: the map's own error,

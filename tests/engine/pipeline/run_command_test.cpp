@@ -61,7 +61,6 @@ TEST(RunCommand, RealLogWithPriorsWritesTheOptimizedTrajectory) {
   for (const char* direction : {"along_m", "lateral_m", "yaw_deg"}) {
     EXPECT_TRUE(m["prior_calibration"][direction].contains("share_beyond_3_sigma")) << direction;
   }
-  EXPECT_EQ(m["odometry_scale_error"].get<double>(), 0.0);  // no scale state by default
   for (const char* stage : {"odometry_s", "road_points_s", "match_s", "graph_s", "pipeline_s"}) {
     EXPECT_GT(m["timing"][stage].get<double>(), 0.0) << stage;
   }
@@ -69,7 +68,6 @@ TEST(RunCommand, RealLogWithPriorsWritesTheOptimizedTrajectory) {
   const auto k = nlohmann::json::parse(kin);
   EXPECT_TRUE(k[0].contains("match"));
   EXPECT_TRUE(k[0].contains("optimized_city_T_ego"));
-  EXPECT_TRUE(k[0].contains("odometry_scale_error"));
 }
 
 TEST(RunCommand, LogWithoutSweepsIsOneLineExit2) {
