@@ -5,14 +5,15 @@
 
 #include "engine/eval/axis_ticks.h"
 #include "engine/eval/bitmap_font.h"
+#include "engine/eval/plot_colours.h"
 
 namespace hdprior {
 namespace {
 
 constexpr int kFontScale = 2;
 constexpr int kMargin = 16;
-constexpr int kTickLength = 6;
-constexpr Rgb kWhite{255, 255, 255}, kAxis{60, 60, 60}, kGrid{225, 225, 225}, kText{30, 30, 30}, kDot{90, 90, 90};
+constexpr int kBoxTick = 6;
+constexpr Rgb kWhite{255, 255, 255}, kBoxGrid{225, 225, 225}, kDot{90, 90, 90};
 
 double quantile(const std::vector<double>& sorted, double p) {
   const double h = double(sorted.size() - 1) * p;
@@ -37,21 +38,21 @@ void drawAxis(RgbImage& im, const BoxPlotLayout& L, const BoxPlotOptions& o) {
   for (int k = 0; k <= ticks; ++k) {
     const double v = k * L.yTick;
     const int y = L.yPixel(v);
-    if (k > 0) hline(im, L.left, L.right, y, 1, kGrid);
-    hline(im, L.left - kTickLength, L.left, y, 2, kAxis);
+    if (k > 0) hline(im, L.left, L.right, y, 1, kBoxGrid);
+    hline(im, L.left - kBoxTick, L.left, y, 2, kAxisColour);
     const std::string label = tickLabel(v, L.tickDecimals);
-    drawText(im, L.left - kTickLength - 4 - textWidth(label, kFontScale), y - capHeight(kFontScale) / 2, label, kFontScale, kText);
+    drawText(im, L.left - kBoxTick - 4 - textWidth(label, kFontScale), y - capHeight(kFontScale) / 2, label, kFontScale, kTextColour);
   }
-  drawCentred(im, (L.left + L.right) / 2, kMargin, o.title, kText);
-  drawText(im, kMargin, (L.top + L.bottom) / 2 + textWidth(o.yTitle, kFontScale) / 2, o.yTitle, kFontScale, kText,
+  drawCentred(im, (L.left + L.right) / 2, kMargin, o.title, kTextColour);
+  drawText(im, kMargin, (L.top + L.bottom) / 2 + textWidth(o.yTitle, kFontScale) / 2, o.yTitle, kFontScale, kTextColour,
            TextDirection::Upwards);
 }
 
 void drawBox(RgbImage& im, const BoxPlotLayout& L, int cx, const BoxPlotSeries& s) {
   const BoxStats b = boxStats(s.values);
   const int w = L.boxHalfWidth;
-  drawCentred(im, cx, L.bottom + 14, s.label, kText);
-  drawCentred(im, cx, L.bottom + 14 + textHeight(kFontScale) + 8, "n = " + std::to_string(b.count), kText);
+  drawCentred(im, cx, L.bottom + 14, s.label, kTextColour);
+  drawCentred(im, cx, L.bottom + 14 + textHeight(kFontScale) + 8, "n = " + std::to_string(b.count), kTextColour);
   if (b.count == 0) return;
   const int yq1 = L.yPixel(b.q1), yq3 = L.yPixel(b.q3), yLow = L.yPixel(b.whiskerLow), yHigh = L.yPixel(b.whiskerHigh);
   vline(im, cx, yHigh, yq3, 2, s.colour);
@@ -113,7 +114,7 @@ BoxPlotLayout boxPlotLayout(const std::vector<BoxPlotSeries>& series, const BoxP
   }
   L.tickDecimals = tickDecimals(L.yTick);
   const int labelWidth = textWidth(tickLabel(L.yMax, L.tickDecimals), kFontScale);
-  L.left = kMargin + textHeight(kFontScale) + 12 + labelWidth + 4 + kTickLength;
+  L.left = kMargin + textHeight(kFontScale) + 12 + labelWidth + 4 + kBoxTick;
   L.top = kMargin + textHeight(kFontScale) + 24;
   L.right = o.width - 24;
   L.bottom = o.height - kMargin - 2 * textHeight(kFontScale) - 30;
@@ -133,8 +134,8 @@ RgbImage drawBoxPlot(const std::vector<BoxPlotSeries>& series, const BoxPlotOpti
   RgbImage im(o.width, o.height, kWhite);
   drawAxis(im, L, o);
   for (size_t i = 0; i < series.size(); ++i) drawBox(im, L, L.centres[i], series[i]);
-  vline(im, L.left, L.top, L.bottom, 2, kAxis);
-  hline(im, L.left, L.right, L.bottom, 2, kAxis);
+  vline(im, L.left, L.top, L.bottom, 2, kAxisColour);
+  hline(im, L.left, L.right, L.bottom, 2, kAxisColour);
   return im;
 }
 

@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "engine/eval/bitmap_font.h"
+#include "engine/eval/plot_colours.h"
 
 namespace hdprior {
 namespace {
 
 constexpr int kScale = kTimePlotFontScale;
-constexpr int kTickLength = 5;
-constexpr Rgb kAxis{60, 60, 60}, kGrid{228, 228, 228}, kZero{170, 170, 170}, kText{30, 30, 30}, kBackground{250, 250, 250};
+constexpr int kPanelTick = 5;
+constexpr Rgb kPanelGrid{228, 228, 228}, kZero{170, 170, 170}, kBackground{250, 250, 250};
 
 double xPixel(const PlotRect& a, const AxisTicks& x, double v) { return a.left + (v - x.low) / (x.high - x.low) * (a.right - a.left); }
 double yPixel(const PlotRect& a, const AxisTicks& y, double v) { return a.bottom - (v - y.low) / (y.high - y.low) * (a.bottom - a.top); }
@@ -25,19 +26,19 @@ void drawGrid(RgbImage& im, const PlotRect& a, const AxisTicks& x, const AxisTic
   im.fillRect(a.left, a.top, a.right + 1, a.bottom + 1, kBackground);
   for (int k = 0; k <= x.count(); ++k) {
     const int px = int(std::lround(xPixel(a, x, x.at(k))));
-    im.fillRect(px, a.top, px + 1, a.bottom, kGrid);
-    im.fillRect(px, a.bottom, px + 1, a.bottom + kTickLength, kAxis);
+    im.fillRect(px, a.top, px + 1, a.bottom, kPanelGrid);
+    im.fillRect(px, a.bottom, px + 1, a.bottom + kPanelTick, kAxisColour);
   }
   for (int k = 0; k <= y.count(); ++k) {
     const double v = y.at(k);
     const int py = int(std::lround(yPixel(a, y, v)));
-    im.fillRect(a.left, py, a.right, py + 1, std::abs(v) < 1e-12 ? kZero : kGrid);
-    im.fillRect(a.left - kTickLength, py, a.left, py + 1, kAxis);
+    im.fillRect(a.left, py, a.right, py + 1, std::abs(v) < 1e-12 ? kZero : kPanelGrid);
+    im.fillRect(a.left - kPanelTick, py, a.left, py + 1, kAxisColour);
     const std::string label = tickLabel(v, y.decimals);
-    drawText(im, a.left - kTickLength - 4 - textWidth(label, kScale), py - capHeight(kScale) / 2, label, kScale, kText);
+    drawText(im, a.left - kPanelTick - 4 - textWidth(label, kScale), py - capHeight(kScale) / 2, label, kScale, kTextColour);
   }
-  im.fillRect(a.left - 1, a.top, a.left + 1, a.bottom + 1, kAxis);
-  im.fillRect(a.left - 1, a.bottom, a.right + 1, a.bottom + 2, kAxis);
+  im.fillRect(a.left - 1, a.top, a.left + 1, a.bottom + 1, kAxisColour);
+  im.fillRect(a.left - 1, a.bottom, a.right + 1, a.bottom + 2, kAxisColour);
 }
 
 // A line through the finite values, broken where one is missing.
@@ -70,7 +71,7 @@ void drawLegend(RgbImage& im, const PlotRect& a, const TimePanel& panel) {
   for (auto s = panel.series.rbegin(); s != panel.series.rend(); ++s) {
     if (s->label.empty()) continue;
     x -= textWidth(s->label, kScale);
-    drawText(im, x, y, s->label, kScale, kText);
+    drawText(im, x, y, s->label, kScale, kTextColour);
     x -= 24;
     im.fillRect(x, y + capHeight(kScale) / 2 - 1, x + 18, y + capHeight(kScale) / 2 + 2, s->colour);
     x -= 14;
@@ -90,12 +91,12 @@ AxisTicks valueTicks(const TimePanel& panel, int intervals) {
 int tickLabelWidth(const AxisTicks& ticks) {
   int w = 0;
   for (int k = 0; k <= ticks.count(); ++k) w = std::max(w, textWidth(tickLabel(ticks.at(k), ticks.decimals), kScale));
-  return w + kTickLength + 4;
+  return w + kPanelTick + 4;
 }
 
 void drawTimePanel(RgbImage& im, const PlotRect& a, const AxisTicks& x, const AxisTicks& y, const TimePanel& panel) {
   drawGrid(im, a, x, y);
-  drawText(im, a.left, a.top - textHeight(kScale) - 4, panel.title, kScale, kText);
+  drawText(im, a.left, a.top - textHeight(kScale) - 4, panel.title, kScale, kTextColour);
   drawLegend(im, a, panel);
   if (!anyFinite(panel)) {
     const std::string none = "no values";
@@ -107,12 +108,12 @@ void drawTimePanel(RgbImage& im, const PlotRect& a, const AxisTicks& x, const Ax
 }
 
 void drawTimeAxisLabels(RgbImage& im, const PlotRect& a, const AxisTicks& x, const std::string& title) {
-  const int y = a.bottom + kTickLength + 6;
+  const int y = a.bottom + kPanelTick + 6;
   for (int k = 0; k <= x.count(); ++k) {
     const std::string label = tickLabel(x.at(k), x.decimals);
-    drawText(im, int(std::lround(xPixel(a, x, x.at(k)))) - textWidth(label, kScale) / 2, y, label, kScale, kText);
+    drawText(im, int(std::lround(xPixel(a, x, x.at(k)))) - textWidth(label, kScale) / 2, y, label, kScale, kTextColour);
   }
-  drawText(im, (a.left + a.right - textWidth(title, kScale)) / 2, y + textHeight(kScale) + 6, title, kScale, kText);
+  drawText(im, (a.left + a.right - textWidth(title, kScale)) / 2, y + textHeight(kScale) + 6, title, kScale, kTextColour);
 }
 
 }  // namespace hdprior

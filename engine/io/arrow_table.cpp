@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "engine/error.h"
+#include "engine/io/arrow_ipc.h"
 #include "engine/io/float16.h"
 
 namespace hdprior::arrow {
@@ -46,8 +47,6 @@ const char* cppName() {
 [[noreturn]] void fail(const Column& c, const std::string& reason) {
   throw Error("column '" + c.name + "'", reason);
 }
-
-int64_t bitmapBytes(int64_t bits) { return (bits + 7) / 8; }
 
 bool getBit(const uint8_t* bits, int64_t i) { return (bits[i >> 3] >> (i & 7)) & 1; }
 

@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "engine/error.h"
+#include "engine/io/arrow_ipc.h"
 #include "engine/io/byte_view.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/flatbuffer_view.h"
@@ -24,9 +25,6 @@ namespace {
 
 constexpr std::string_view kMagic = "ARROW1";
 constexpr uint32_t kContinuation = 0xFFFFFFFFu;
-constexpr int16_t kMetadataV4 = 3, kMetadataV5 = 4;
-constexpr uint8_t kHeaderRecordBatch = 3;
-constexpr uint8_t kTypeInt = 2, kTypeFloatingPoint = 3, kTypeUtf8 = 5, kTypeDecimal = 7;
 constexpr int8_t kCodecLz4Frame = 0, kCodecZstd = 1;
 // Far above any real log, low enough that row counts times widths cannot overflow.
 constexpr int64_t kMaxRows = int64_t(1) << 40;
@@ -259,13 +257,13 @@ Column decodeColumn(const FieldSpec& spec, int64_t length, int64_t nulls, BodyRe
   c.nullable = spec.nullable;
   c.length = length;
   const std::string col = "column '" + spec.name + "'";
-  const uint64_t bitmapBytes = uint64_t(length + 7) / 8;
+  const uint64_t validityBytes = uint64_t(bitmapBytes(length));
   if (nulls > 0) {
-    const std::span<const uint8_t> bits = body.get(buffer, bitmapBytes, col + " validity");
+    const std::span<const uint8_t> bits = body.get(buffer, validityBytes, col + " validity");
     if (length - countValid(bits.data(), length) != nulls) {
       file.fail(context + ": " + col + " validity bitmap disagrees with null count " + std::to_string(nulls));
     }
-    c.validity.assign(bits.begin(), bits.begin() + ptrdiff_t(bitmapBytes));
+    c.validity.assign(bits.begin(), bits.begin() + ptrdiff_t(validityBytes));
     if (length % 8 != 0) c.validity.back() &= uint8_t((1u << (length % 8)) - 1);
   }
   ++buffer;

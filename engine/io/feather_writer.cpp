@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "engine/error.h"
+#include "engine/io/arrow_ipc.h"
 #include "engine/io/feather.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/flatbuffer_builder.h"
@@ -16,9 +17,6 @@ namespace hdprior::arrow {
 
 namespace {
 
-constexpr int16_t kMetadataV5 = 4;
-constexpr uint8_t kHeaderSchema = 1, kHeaderRecordBatch = 3;
-constexpr uint8_t kTypeInt = 2, kTypeFloatingPoint = 3, kTypeUtf8 = 5;
 constexpr int kZstdLevel = 1;  // Arrow's default
 
 template <class T>
@@ -29,8 +27,6 @@ void appendScalar(std::vector<uint8_t>& out, T value) {
 }
 
 void padTo8(std::vector<uint8_t>& out) { out.resize((out.size() + 7) / 8 * 8, 0); }
-
-int64_t bitmapBytes(int64_t bits) { return (bits + 7) / 8; }
 
 fb::TableBuilder fieldTable(const Column& c) {
   fb::TableBuilder type;

@@ -5,14 +5,13 @@
 #include <numbers>
 
 #include "engine/error.h"
+#include "engine/geom/angles.h"
 #include "engine/map/hd_map.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/odom/parallel_for.h"
 
 namespace hdprior {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 void validate(const CostLandscapeOptions& o) {
   if (!(o.step > 0) || !(o.halfExtent >= 0) || o.halfExtent / o.step > 2000)

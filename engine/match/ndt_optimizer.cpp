@@ -6,13 +6,12 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "engine/geom/angles.h"
 #include "engine/map/ndt_grid.h"
 #include "engine/map/ndt_score.h"
 
 namespace hdprior {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // An ascent direction: (-H)^-1 g with -H's eigenvalues (in scaled units) lifted to a floor.
 Eigen::Vector3d ascentDirection(const NdtScore& s, double yawLength) {

@@ -12,15 +12,9 @@
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
 #include "engine/odom/odometry.h"
+#include "engine/pipeline/seconds_since.h"
 
 namespace hdprior {
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses)
     : map_(map), config_(config), cityTOdom_(cityTOdom), givenPoses_(givenPoses),

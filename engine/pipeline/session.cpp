@@ -9,13 +9,12 @@
 #include "engine/match/map_matcher.h"
 #include "engine/pipeline/global_map.h"
 #include "engine/pipeline/point_labels.h"
+#include "engine/pipeline/seconds_since.h"
 
 namespace hdprior {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void checkLog(const ArgoverseLog& log) {
   if (log.sweepCount() == 0) throw Error((log.dir() / "sensors" / "lidar").string(), "the log has no sweeps");

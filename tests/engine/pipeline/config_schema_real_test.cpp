@@ -71,7 +71,7 @@ void buildEveryStage(const ArgoverseLog& log, const Config& c) {
   Odometry odometry(c.odometry, c.keyframes);
   odometry.registerSweep(*log.sweep(0));
   odometry.registerSweep(*log.sweep(1));
-  const std::vector<Eigen::Vector2d> road = sweepRoadPoints(*log.sweep(0), Eigen::Matrix3d::Identity(), c.roadPoints);
+  const std::vector<Eigen::Vector2d> road = sweepRoadPoints(*log.sweep(0), Eigen::Matrix3d::Identity(), c.roadPoints).road;
   MapMatcher matcher(*map, c.match);
   const Eigen::Vector3d start(truth.translation().x(), truth.translation().y(),
                               std::atan2(truth.rotation()(1, 0), truth.rotation()(0, 0)));
