@@ -76,7 +76,7 @@ TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
   EXPECT_EQ(errorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})"), "my.json: odometry.deskew.mode must be one of none, constant_velocity");
   EXPECT_NE(errorOf(R"({"match": 3})").find("match must be a JSON object"), std::string::npos);
   EXPECT_EQ(errorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be one of ndt2d, pcl");
-  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.1, 100]");
+  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.5, 100]");
   EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": []}})"), "my.json: match.cell_sizes must be a non-empty array of numbers");
   EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 2.0]}})"), "my.json: match.cell_sizes must go from coarse to fine (decreasing)");
   EXPECT_EQ(errorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
