@@ -22,9 +22,7 @@ struct PoseGraph::Impl {
 };
 
 PoseGraph::PoseGraph(PoseGraphOptions options) : impl_(std::make_unique<Impl>()), options_(options) {
-  if (!(options_.priorHuber > 0) || options_.maxIterations < 1 || !(options_.mapErrorLength >= 0)) {
-    throw Error("pose graph options", "priorHuber, maxIterations or mapErrorLength out of range");
-  }
+  checkOptionRanges("pose graph options", optionFields(options_));
   impl_->problem.AddParameterBlock(impl_->zeroOffset.data(), 2);
   impl_->problem.SetParameterBlockConstant(impl_->zeroOffset.data());
 }

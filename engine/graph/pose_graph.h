@@ -8,6 +8,7 @@
 #include "engine/geom/pose_trajectory.h"
 #include "engine/geom/se3.h"
 #include "engine/graph/pose_prior.h"
+#include "engine/option_fields.h"
 
 namespace hdprior {
 
@@ -34,6 +35,8 @@ struct PoseGraphOptions {
   // is flat, a looser model would let the priors pull a good odometry about.
   double driftModelMarginNats = 1.0;
 };
+std::vector<OptionField> optionFields(PoseGraphOptions& o);  // its configuration keys
+
 
 struct SolveSummary {
   int iterations = 0;

@@ -3,6 +3,7 @@
 
 #include "engine/geom/information.h"
 #include "engine/geom/se3.h"
+#include "engine/option_fields.h"
 
 namespace hdprior {
 
@@ -35,6 +36,8 @@ struct PosePriorOptions {
   // follows them. 0: never.
   int reanchorPriors = 3;
 };
+std::vector<OptionField> optionFields(PosePriorOptions& o);  // its configuration keys (ego_height is vehicle.ego_height)
+
 
 // The prior's information over the planar pose (x, y, yaw), the order of a match's.
 Eigen::Matrix3d planarInformation(const PosePrior& prior);

@@ -13,6 +13,8 @@ namespace hdprior {
 namespace {
 
 void validate(const GroundSegmentationOptions& o) {
+  GroundSegmentationOptions keys = o;
+  checkOptionRanges("ground segmentation options", optionFields(keys));
   const auto bad = [](const std::string& why) { throw Error("ground segmentation options", why); };
   if (o.zoneRadii.empty() || o.zoneRadii.size() != o.zoneRings.size() || o.zoneRadii.size() != o.zoneSectors.size()) {
     bad("zoneRadii, zoneRings and zoneSectors must be non-empty and of equal length");
@@ -23,10 +25,7 @@ void validate(const GroundSegmentationOptions& o) {
     if (o.zoneRings[z] < 1 || o.zoneSectors[z] < 1 || o.zoneSectors[z] > 4096) bad("bad ring or sector count");
     previous = o.zoneRadii[z];
   }
-  if (!(o.minRange >= 0.0) || o.minBinPoints < 3 || o.seedPoints < 3 || o.iterations < 1 ||
-      !(o.planeDistance > 0.0) || !(o.seedHeight > 0.0) || !(o.maxTiltDeg > 0.0 && o.maxTiltDeg < 90.0)) {
-    bad("minRange, minBinPoints, seedPoints, iterations, planeDistance, seedHeight or maxTiltDeg out of range");
-  }
+  if (o.minBinPoints < 3 || o.seedPoints < 3 || o.iterations < 1) bad("minBinPoints, seedPoints or iterations out of range");
 }
 
 // Least-squares plane through points: unit normal (z >= 0) and centroid.

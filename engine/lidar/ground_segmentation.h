@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/option_fields.h"
+
 namespace hdprior {
 
 // Concentric-zone ground segmentation (after Patchwork, Lim et al. 2021): the plane around
@@ -29,6 +31,8 @@ struct GroundSegmentationOptions {
   double maxElevation = 0.6;       // the plane at the bin centre may lie this far above groundZ
   double elevationPerMetre = 0.05; // ... plus this much per metre of range (slopes)
 };
+std::vector<OptionField> optionFields(GroundSegmentationOptions& o);  // its configuration keys
+
 
 // One flag per point: 1 = ground.
 std::vector<uint8_t> segmentGround(std::span<const Eigen::Vector3d> points, const GroundSegmentationOptions& options = {});

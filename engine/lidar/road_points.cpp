@@ -15,8 +15,11 @@ namespace hdprior {
 namespace {
 
 void validate(const RoadPointOptions& o) {
-  if (!(o.maxRange > 0 && o.maxStep > 0 && o.stepPerMetre >= 0 && o.maxCamber >= 0 && o.maxGap > 0 && o.window >= 0 && o.maxSkipped >= 0 && o.gutterRise >= 0 && o.gutterWindow > 0 && o.seedHalfWidth > 0 && o.seedTolerance > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 && o.laneObjectHeight > o.laneStep)) {
-    throw Error("road point options", "maxRange, maxStep, stepPerMetre, maxGap, seed or lane settings out of range (laneObjectHeight must be above laneStep)");
+  RoadPointOptions keys = o;
+  checkOptionRanges("road point options", optionFields(keys));
+  if (!(o.maxSkipped >= 0 && o.gutterWindow > 0 && o.seedTolerancePerMetre >= 0 && o.laneStep > 0 && o.gradeLength > 0 &&
+        o.laneObjectHeight > o.laneStep)) {
+    throw Error("road point options", "maxSkipped, gutterWindow, seedTolerancePerMetre or lane settings out of range (laneObjectHeight must be above laneStep)");
   }
 }
 

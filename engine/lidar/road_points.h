@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/option_fields.h"
+
 namespace hdprior {
 
 // Road-point extraction: of the ground points, the road surface the vehicle drives on,
@@ -42,6 +44,8 @@ struct RoadPointOptions {
   double laneObjectHeight = 0.35;  // a lane point higher than this above the profile is an object, not a kerb
   double laneEndLength = 1.0;      // the lane ends where its points stay above the profile this far along it
 };
+std::vector<OptionField> optionFields(RoadPointOptions& o);  // its configuration keys
+
 
 inline constexpr uint8_t kRoadPoint = 1;
 inline constexpr uint8_t kCurbPoint = 2;  // a road point where the walk ended at a height step it saw, no object on it (a curb)

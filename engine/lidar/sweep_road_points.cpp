@@ -15,6 +15,9 @@ LabelledSweep labelSweep(const LidarSweep& sweep, const Eigen::Matrix3d& egoLeve
 }
 
 PlanarRoadPoints planarRoadPoints(const LabelledSweep& sweep, double thinCell) {
+  SweepRoadPointOptions keys;
+  keys.thinCell = thinCell;
+  checkOptionRanges("road point options", optionFields(keys));
   PlanarRoadPoints out;
   out.road = planarPoints(sweep.points, sweep.road, thinCell);
   for (size_t i = 0; i < sweep.points.size(); ++i) {

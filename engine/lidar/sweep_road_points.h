@@ -7,6 +7,7 @@
 #include "engine/io/lidar_sweep.h"
 #include "engine/lidar/ground_segmentation.h"
 #include "engine/lidar/road_points.h"
+#include "engine/option_fields.h"
 
 namespace hdprior {
 
@@ -15,6 +16,8 @@ struct SweepRoadPointOptions {
   RoadPointOptions road;
   double thinCell = 0.10;  // one planar point per this many metres square (0: all)
 };
+std::vector<OptionField> optionFields(SweepRoadPointOptions& o);  // its own keys (thin_cell), not ground's or road's
+
 
 // A sweep's points rotated by egoLevel (the vehicle's roll and pitch, so the road plane is level),
 // with their ground flags (segmentGround) and road flags (0, kRoadPoint or kCurbPoint:

@@ -16,28 +16,13 @@
 namespace hdprior {
 namespace {
 
+// The keys against their declared ranges, and the fixed internal constants.
 void validate(const MatchOptions& o) {
-  const auto bad = [](const std::string& why) { throw Error("match options", why); };
-  if (o.cellSizes.empty()) bad("cellSizes is empty");
-  if (!(o.outlierRatio > 0 && o.outlierRatio < 1)) bad("outlierRatio must be in (0, 1)");
-  if (o.maxIterations < 1 || !(o.maxStepCells > 0) || !(o.maxStepYawDeg > 0) || !(o.maxStepGain >= 1)) {
-    bad("iterations or step bounds out of range");
-  }
-  if (!(o.translationTolerance > 0) || !(o.yawToleranceDeg > 0) || !(o.timeBudgetMs > 0)) bad("tolerances or time budget out of range");
-  if (!(o.yawLength > 0) || !(o.degenerateRatio >= 0 && o.degenerateRatio < 1) || !(o.minInformation >= 0) ||
-      !(o.boundaryBand > 0) || !(o.minBoundaryPoints >= 0)) {
-    bad("yawLength, boundaryBand, degenerateRatio, minBoundaryPoints or minInformation out of range");
-  }
-  if (!(o.evidenceShare >= 0 && o.evidenceShare < 1) || o.evidenceMinPoints < 0 || o.evidenceStride < 1 ||
-      !(o.evidenceMaxOffset > 0) || !(o.evidenceMaxYawDeg > 0) || !(o.evidenceKappa > 0) || !(o.staleRegionSize > 0) || !(o.staleDistance > 0) || !(o.staleDistancePerMetre >= 0) ||
-      !(o.staleShare >= 0 && o.staleShare <= 1) || !(o.evidenceCurbBand > 0) ||
-      !(o.evidenceCurbShare >= 0 && o.evidenceCurbShare < 1) || !(o.mapSigma >= 0) ||
-      !(o.mapSigmaYawDeg >= 0) || !(o.maxSigmaAlong > 0) || !(o.maxSigmaLateral > 0) || !(o.maxSigmaYawDeg > 0)) {
-    bad("evidence uncertainty options out of range");
-  }
-  if (o.minPoints < 1 || !(o.minInlierRatio >= 0 && o.minInlierRatio <= 1) || !(o.gateChi2 > 0) ||
-      !(o.predictionSigma.minCoeff() > 0)) {
-    bad("minPoints, minInlierRatio, gateChi2 or predictionSigma out of range");
+  MatchOptions keys = o;
+  checkOptionRanges("match options", optionFields(keys));
+  if (!(o.maxStepCells > 0) || !(o.maxStepYawDeg > 0) || !(o.maxStepGain >= 1) || !(o.translationTolerance > 0) ||
+      !(o.yawToleranceDeg > 0) || !(o.yawLength > 0)) {
+    throw Error("match options", "step bounds, tolerances or yawLength out of range");
   }
 }
 

@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "engine/geom/angles.h"
 #include "engine/map/boundary_distance.h"
 #include "engine/map/drivable_raster.h"
 #include "engine/map/ndt_grid.h"
@@ -89,7 +90,7 @@ double predictionChi2(const Eigen::Vector3d& initial, const Eigen::Vector3d& est
   const Eigen::Vector2d d = Eigen::Rotation2Dd(-initial.z()) * (estimate.head<2>() - initial.head<2>());
   const double dyaw = wrapAngle(estimate.z() - initial.z());
   return (d.x() * d.x()) / (sigma.x() * sigma.x()) + (d.y() * d.y()) / (sigma.y() * sigma.y()) +
-         dyaw * dyaw / (sigma.z() * sigma.z());
+         dyaw * dyaw / (sigma.z() * kDegree * sigma.z() * kDegree);
 }
 
 void assessMatch(const NdtGrid& grid, const DrivableRaster& drivable, const BoundaryDistance& sdf, std::span<const Eigen::Vector2d> points,

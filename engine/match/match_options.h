@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/option_fields.h"
+
 namespace hdprior {
 
 enum class MatchBackend { Ndt2d, PclNdt };
@@ -52,7 +54,7 @@ struct MatchOptions {
   int minPoints = 200;
   double minInlierRatio = 0.85;         // share of points placed on the drivable area
   // The prediction's (odometry's) uncertainty: the estimate must lie within the gate.
-  Eigen::Vector3d predictionSigma = {1.5, 1.5, 0.07};  // x, y metres (vehicle frame), yaw radians
+  Eigen::Vector3d predictionSigma = {1.5, 1.5, 4.0};  // x, y metres (vehicle frame), yaw degrees
   double gateChi2 = 11.34;              // 3 degrees of freedom, 99 %
 
   // --- A stale map (engine/match/stale_regions.h): regions where the map disagrees are left out ---
@@ -81,5 +83,7 @@ struct MatchOptions {
   double maxSigmaLateral = 0.3;
   double maxSigmaYawDeg = 0.5;
 };
+std::vector<OptionField> optionFields(MatchOptions& o);  // its configuration keys
+
 
 }  // namespace hdprior

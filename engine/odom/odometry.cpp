@@ -29,16 +29,26 @@ std::vector<Eigen::Vector3f> transformed(const std::vector<Eigen::Vector3f>& poi
   return out;
 }
 
+OdometryOptions checked(OdometryOptions o) {
+  checkOptionRanges("odometry options", optionFields(o.features));
+  checkOptionRanges("odometry options", optionFields(o.deskew));
+  checkOptionRanges("odometry options", optionFields(o.registration));
+  checkOptionRanges("odometry options", optionFields(o.localMap));
+  return o;
+}
+
+KeyframeOptions checked(KeyframeOptions o) {
+  checkOptionRanges("keyframe options", optionFields(o));
+  return o;
+}
+
 }  // namespace
 
 Odometry::Odometry(const OdometryOptions& options, const KeyframeOptions& keyframes, PoseTrajectory given)
-    : options_(options),
-      keyframeOptions_(keyframes),
+    : options_(checked(options)),
+      keyframeOptions_(checked(keyframes)),
       localMap_(options.localMap),
       given_(std::move(given)) {
-  if (options_.deskew.mode != "none" && options_.deskew.mode != "constant_velocity") {
-    throw Error("odometry.deskew.mode", "must be \"none\" or \"constant_velocity\", not \"" + options_.deskew.mode + "\"");
-  }
   if (const std::string problem = odometryDriftProblem(options_.drift); !problem.empty()) throw Error("odometry.drift", problem);
 }
 

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "engine/odom/odometry_drift.h"
+#include "engine/option_fields.h"
 
 namespace hdprior {
 
@@ -62,5 +63,13 @@ struct OdometryOptions {
   // on the odometry's own estimate. Off (all zero) by default: for evaluation.
   OdometryDrift drift;
 };
+
+// The configuration keys of each (engine/odom/odometry_option_fields.cpp).
+std::vector<OptionField> optionFields(FeatureOptions& o);
+std::vector<OptionField> optionFields(DeskewOptions& o);
+std::vector<OptionField> optionFields(RegistrationOptions& o);
+std::vector<OptionField> optionFields(LocalMapOptions& o);
+std::vector<OptionField> optionFields(KeyframeOptions& o);
+
 
 }  // namespace hdprior

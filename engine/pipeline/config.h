@@ -28,6 +28,10 @@ struct Config {
 
 const Config& defaultConfig();
 
+// Throws Error("configuration", "match.min_points = 0 is out of range [1, 10000000]") for a value the
+// schema refuses: the check of a configuration made in code rather than read from a file.
+void checkConfig(const Config& config);
+
 // The ego origin's height above the road, which the priors' altitude and the road-point extraction
 // (as the road level, -egoHeight) both use: one key, vehicle.ego_height.
 void setEgoHeight(Config& config, double egoHeight);

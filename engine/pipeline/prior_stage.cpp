@@ -15,9 +15,17 @@
 #include "engine/pipeline/seconds_since.h"
 
 namespace hdprior {
+namespace {
+
+const Config& checked(const Config& config) {
+  checkConfig(config);
+  return config;
+}
+
+}  // namespace
 
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses)
-    : map_(map), config_(config), cityTOdom_(cityTOdom), givenPoses_(givenPoses),
+    : map_(map), config_(checked(config)), cityTOdom_(cityTOdom), givenPoses_(givenPoses),
       matcher_(std::make_unique<MapMatcher>(map, config.match)), graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
   config_.graph = odometryDriftModel(config.graph, givenPoses_, config.odometry.drift);
@@ -120,6 +128,8 @@ SolveSummary PriorStage::finish(const Odometry& odometry) {
 }
 
 void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& prior, const PoseGraphOptions& graph) {
+  PosePriorOptions keys = prior;
+  checkOptionRanges("prior options", optionFields(keys));
   config_.prior = prior;
   config_.graph = odometryDriftModel(graph, givenPoses_, config_.odometry.drift);
   rebuild(odometry);

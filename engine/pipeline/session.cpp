@@ -27,6 +27,7 @@ void checkLog(const ArgoverseLog& log) {
 
 Session::Session(const ArgoverseLog& log, const HdMap* map, const Config& config, const PipelineOptions& options)
     : log_(log), map_(options.priors ? map : nullptr), config_(config), givenOdometry_(options.givenOdometry) {
+  checkConfig(config);
   checkLog(log);
   cityTOdom_ = log.cityTEgo().at(log.sweepTimestamps().front());
   odometry_ = std::make_unique<Odometry>(

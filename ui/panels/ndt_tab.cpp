@@ -4,7 +4,6 @@
 #include <cfloat>
 #include <cstring>
 #include <vector>
-#include <numbers>
 #include <optional>
 #include <string>
 
@@ -17,8 +16,6 @@
 namespace hdprior::ui {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // Sliders over doubles; true when changed.
 bool slider(const char* label, double& value, double min, double max, const char* format = "%.2f") {
   float v = float(value);
@@ -27,12 +24,6 @@ bool slider(const char* label, double& value, double min, double max, const char
   return true;
 }
 bool sliderInt(const char* label, int& value, int min, int max) { return ImGui::SliderInt(label, &value, min, max); }
-bool degrees(const char* label, double& radians, double maxDeg) {
-  double d = radians / kDeg;
-  if (!slider(label, d, 0.0, maxDeg)) return false;
-  radians = d * kDeg;
-  return true;
-}
 
 // The cell sizes the map carries, each a checkbox; the match runs coarse to fine over the ticked ones.
 bool drawCellSizes(AppState& state) {
@@ -79,7 +70,7 @@ bool drawAcceptance(AppState& state) {
   changed |= slider("gate chi2", m.gateChi2, 1.0, 50.0, "%.1f");
   changed |= slider("prediction sigma x", m.predictionSigma.x(), 0.05, 5.0);
   changed |= slider("prediction sigma y", m.predictionSigma.y(), 0.05, 5.0);
-  changed |= degrees("prediction sigma yaw", m.predictionSigma.z(), 20.0);
+  changed |= slider("prediction sigma yaw (deg)", m.predictionSigma.z(), 0.1, 20.0);
   return changed;
 }
 

@@ -111,7 +111,7 @@ TEST(MapMatcher, RejectsPoorFitsFewPointsAndInconsistentEstimates) {
   }
   {  // A prediction claimed to be good to 0.1 m, 1.5 m off: the estimate leaves the gate.
     MatchOptions o;
-    o.predictionSigma = {0.1, 0.1, 0.2 * kDeg};
+    o.predictionSigma = {0.1, 0.1, 0.2};
     MapMatcher matcher(map, o);
     const MatchResult r = matcher.match(points, offsetPose(truth, {0.0, 1.5, 0.0}));
     EXPECT_EQ(r.status, MatchStatus::Rejected);

@@ -1,12 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "engine/error.h"
+#include "engine/graph/pose_graph.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
 #include "engine/map/hd_map.h"
@@ -78,7 +80,84 @@ void buildEveryStage(const ArgoverseLog& log, const Config& c) {
   matcher.match(road, start);
 }
 
+// Values just beyond each end of a declared range (none for a choice).
+std::vector<double> beyondEnds(const OptionField& f) {
+  if (std::holds_alternative<OptionChoice>(f.value)) return {};
+  const OptionRange r(f.range);
+  return {r.loOpen ? r.lo : r.lo - 1, r.hiOpen ? r.hi : r.hi + 1};
+}
+
+struct SetTo {
+  double v;
+  void operator()(int* p) const { *p = int(v); }
+  void operator()(double* p) const { *p = v; }
+  void operator()(std::vector<double>* p) const { std::fill(p->begin(), p->end(), v); }
+  void operator()(Eigen::Vector3d* p) const { p->setConstant(v); }
+  void operator()(const OptionChoice&) const {}
+};
+
+// Every declared key of Options, set just beyond each end of its range, makes `build` throw an Error
+// that names the key and the value.
+template <class Options>
+void expectEveryKeyRefused(const std::string& stage, const std::function<void(const Options&)>& build) {
+  Options declared;
+  const std::vector<OptionField> fields = optionFields(declared);
+  for (size_t i = 0; i < fields.size(); ++i) {
+    for (double v : beyondEnds(fields[i])) {
+      Options o;
+      std::visit(SetTo{v}, optionFields(o)[i].value);
+      const std::string key = fields[i].key;
+      try {
+        build(o);
+        ADD_FAILURE() << stage << " accepted " << key << " = " << v;
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(key + " = "), std::string::npos) << stage << ": " << e.what();
+        EXPECT_NE(std::string(e.what()).find(" is out of range " + std::string(fields[i].range)), std::string::npos) << e.what();
+      }
+    }
+  }
+}
+
 }  // namespace
+
+// The stages check their options against the same declarations as the configuration file: a value
+// the schema refuses is refused by the constructor of the stage that uses it, naming the key, when
+// the stage is built in code (the engine's API, the app's sliders) rather than from a file.
+TEST(ConfigSchema, EveryRefusedValueIsRefusedByItsStageNamingTheKey) {
+  const ArgoverseLog log(test::sharedLog());
+  const Config defaults = defaultConfig();
+  const std::unique_ptr<HdMap> map = loadPriorMap(log, defaults);
+  const SE3 start = log.cityTEgo().at(log.sweepTimestamps().front());
+  const auto sweep = log.sweep(0);
+  expectEveryKeyRefused<FeatureOptions>("odometry", [&](const FeatureOptions& o) { Odometry({.features = o}, {}); });
+  expectEveryKeyRefused<RegistrationOptions>("odometry", [&](const RegistrationOptions& o) { Odometry({.registration = o}, {}); });
+  expectEveryKeyRefused<LocalMapOptions>("odometry", [&](const LocalMapOptions& o) { Odometry({.localMap = o}, {}); });
+  expectEveryKeyRefused<KeyframeOptions>("odometry", [&](const KeyframeOptions& o) { Odometry({}, o); });
+  expectEveryKeyRefused<GroundSegmentationOptions>("road points", [&](const GroundSegmentationOptions& o) {
+    labelSweep(*sweep, Eigen::Matrix3d::Identity(), {.ground = o});
+  });
+  expectEveryKeyRefused<RoadPointOptions>("road points", [&](const RoadPointOptions& o) {
+    labelSweep(*sweep, Eigen::Matrix3d::Identity(), {.road = o});
+  });
+  expectEveryKeyRefused<SweepRoadPointOptions>("road points", [&](const SweepRoadPointOptions& o) {
+    sweepRoadPoints(*sweep, Eigen::Matrix3d::Identity(), o);
+  });
+  expectEveryKeyRefused<MatchOptions>("map matcher", [&](const MatchOptions& o) { MapMatcher(*map, o); });
+  expectEveryKeyRefused<PoseGraphOptions>("pose graph", [&](const PoseGraphOptions& o) { PoseGraph{o}; });
+  expectEveryKeyRefused<PosePriorOptions>("prior stage", [&](const PosePriorOptions& o) {
+    Config c = defaults;
+    c.prior = o;
+    PriorStage(*map, c, start);
+  });
+  Config c = defaults;
+  setEgoHeight(c, -1);
+  try {
+    PriorStage(*map, c, start);
+    ADD_FAILURE() << "a negative ego height was accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "configuration: vehicle.ego_height = -1 is out of range [0, 10]");
+  }
+}
 
 // No configuration that the schema accepts fails later because of a range: every key at both ends
 // of its range (and every name of a choice) builds and runs every stage on the real log.
