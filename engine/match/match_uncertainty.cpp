@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/map/boundary_distance.h"
 
@@ -17,8 +17,6 @@ namespace hdprior {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // Counts the road points off the drivable area (beyond `margin` outside it) and the curb points off
 // the boundary (beyond `curbBand` from it) at a pose.
 struct OffCounter {
@@ -133,7 +131,7 @@ Eigen::Vector3d plausibleHalfWidths(const BoundaryDistance& sdf, std::span<const
   Eigen::Vector3d widths;
   for (int axis = 0; axis < 3; ++axis) {
     const bool yaw = axis == 2;
-    const double first = yaw ? 0.1 * kDeg : 0.05, limit = yaw ? o.evidenceMaxYawDeg * kDeg : o.evidenceMaxOffset;
+    const double first = yaw ? 0.1 * kDegree : 0.05, limit = yaw ? o.evidenceMaxYawDeg * kDegree : o.evidenceMaxOffset;
     const Eigen::Vector3d unit = Eigen::Vector3d::Unit(axis);
     const double plus = plausibleReach(off, estimate, unit, first, limit, allowed);
     const double minus = plausibleReach(off, estimate, -unit, first, limit, allowed);
@@ -149,8 +147,8 @@ void widenToEvidence(const Eigen::Vector3d& halfWidths, const MatchOptions& o, M
   const Eigen::Matrix3d toCity = fromCity.inverse();
   const Eigen::Matrix3d laplaceInformation = toCity.transpose() * r.information * toCity;
   const Eigen::Vector3d evidenceSigma = halfWidths.cwiseProduct(scale) / o.evidenceKappa;
-  const Eigen::Vector3d mapSigma(o.mapSigma, o.mapSigma, o.mapSigmaYawDeg * kDeg * o.yawLength);
-  const Eigen::Vector3d cap(o.maxSigmaAlong, o.maxSigmaLateral, o.maxSigmaYawDeg * kDeg * o.yawLength);
+  const Eigen::Vector3d mapSigma(o.mapSigma, o.mapSigma, o.mapSigmaYawDeg * kDegree * o.yawLength);
+  const Eigen::Vector3d cap(o.maxSigmaAlong, o.maxSigmaLateral, o.maxSigmaYawDeg * kDegree * o.yawLength);
 
   // Each direction the Laplace information observes (its eigenvectors u): its variance raised to the
   // evidence's along u (the axes' evidence projected on u), plus the map's error; a direction that then

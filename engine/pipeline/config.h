@@ -11,10 +11,12 @@
 namespace hdprior {
 
 // The one configuration of hdprior, read by the CLI and the app from one JSON file. Every key is
-// optional: a file's keys are set over the defaults. The schema in config.cpp declares each key
-// once (its member here, whose initialiser is the default, its range, unit and description); the
-// loader, `config --check`, `config --defaults` and the reference (docs/config.md) all come from it.
-// Unknown keys, wrong types and values out of range are errors naming the file and the key.
+// optional: a file's keys are set over the defaults. Each key is declared once, next to the options
+// struct that holds it (optionFields: its member, whose initialiser is the default, its range, unit
+// and description); the schema in config.cpp gathers them into sections. The loader, `config
+// --check`, `config --defaults`, the reference (docs/config.md) and the stages' constructors all
+// check against those declarations. Unknown keys, wrong types and values out of range are errors
+// naming the file and the key.
 struct Config {
   OdometryOptions odometry;
   KeyframeOptions keyframes;

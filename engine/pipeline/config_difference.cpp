@@ -5,9 +5,9 @@
 namespace hdprior {
 namespace {
 
-using json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;  // keeps the keys in the file's order
 
-void compare(const json& a, const json& b, const std::string& key, std::vector<std::string>& out) {
+void compare(const OrderedJson& a, const OrderedJson& b, const std::string& key, std::vector<std::string>& out) {
   if (a.is_object() && b.is_object()) {
     for (const auto& [name, value] : a.items())
       if (b.contains(name)) compare(value, b.at(name), key.empty() ? name : key + "." + name, out);
@@ -20,7 +20,7 @@ void compare(const json& a, const json& b, const std::string& key, std::vector<s
 
 std::vector<std::string> configDifferences(const Config& before, const Config& after) {
   std::vector<std::string> out;
-  compare(json::parse(formatConfig(before)), json::parse(formatConfig(after)), "", out);
+  compare(OrderedJson::parse(formatConfig(before)), OrderedJson::parse(formatConfig(after)), "", out);
   return out;
 }
 

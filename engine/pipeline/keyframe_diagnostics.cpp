@@ -8,6 +8,7 @@
 
 #include "engine/error.h"
 #include "engine/eval/match_calibration.h"
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/graph/pose_prior.h"
 #include "engine/io/file_bytes.h"
@@ -17,7 +18,7 @@ namespace hdprior {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kDegree = 180.0 / std::numbers::pi;
 using F = DiagnosticField;
 
 double finiteOrNaN(double v) { return std::isfinite(v) ? v : kNaN; }
@@ -25,7 +26,7 @@ double finiteOrNaN(double v) { return std::isfinite(v) ? v : kNaN; }
 void setTriple(KeyframeDiagnostic& d, F first, const Eigen::Vector3d& v) {
   d[first] = finiteOrNaN(v(0));
   d[F(size_t(first) + 1)] = finiteOrNaN(v(1));
-  d[F(size_t(first) + 2)] = finiteOrNaN(v(2) * kDeg);
+  d[F(size_t(first) + 2)] = finiteOrNaN(v(2) * kDegree);
 }
 
 void setEvidence(KeyframeDiagnostic& d, const KeyframeMatch& m) {

@@ -24,17 +24,11 @@
 #include "engine/sim/map_change.h"
 #include "engine/sim/town_generator.h"
 #include "engine/sim/town_writer.h"
+#include "engine/sim/splitmix.h"
 
 namespace hdprior {
 namespace fs = std::filesystem;
 namespace {
-
-uint64_t splitmix(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 uint64_t hashText(const std::string& s, uint64_t h) {
   for (unsigned char c : s) h = splitmix(h ^ c);

@@ -8,19 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "engine/geom/angles.h"
+#include "engine/sim/splitmix.h"
 
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kLasers = 64;
-
-uint64_t splitmix(uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 struct Draw {
   std::mt19937_64 rng;
@@ -58,13 +52,13 @@ void drawRoadside(Draw& draw, RoadsideOptions& r) {
 }
 
 void drawLidar(Draw& draw, SceneVariation& v) {
-  const double elevation = draw(0.0, 0.2) * kDeg, bias = draw(0.0, 0.03);
+  const double elevation = draw(0.0, 0.2) * kDegree, bias = draw(0.0, 0.03);
   for (int l = 0; l < kLasers; ++l) {
     v.elevationErrors.push_back(draw(-elevation, elevation));
     v.rangeBiases.push_back(draw(-bias, bias));
   }
   const Eigen::Vector3d axis = draw.direction();
-  const double angle = draw(0.0, 0.3) * kDeg;
+  const double angle = draw(0.0, 0.3) * kDegree;
   const Eigen::Vector3d shift = draw.direction();
   const double distance = draw(0.0, 0.02);
   v.downRotationError = angle * axis;
@@ -172,12 +166,12 @@ std::string sceneVariationToJson(const SceneVariation& v) {
                    {"map_error_amplitude_m", r.mapErrorAmplitude},
                    {"map_error_wavelength_m", r.mapErrorWavelength}};
   std::vector<double> elevationDeg;
-  for (double e : v.elevationErrors) elevationDeg.push_back(e / kDeg);
+  for (double e : v.elevationErrors) elevationDeg.push_back(e / kDegree);
   j["lidar"] = {{"elevation_error_deg", elevationDeg},
                 {"range_bias_m", v.rangeBiases},
                 {"down_lidar_rotation_error_deg",
-                 {v.downRotationError.x() / kDeg, v.downRotationError.y() / kDeg, v.downRotationError.z() / kDeg}},
-                {"down_lidar_rotation_error_angle_deg", v.downRotationError.norm() / kDeg},
+                 {v.downRotationError.x() / kDegree, v.downRotationError.y() / kDegree, v.downRotationError.z() / kDegree}},
+                {"down_lidar_rotation_error_angle_deg", v.downRotationError.norm() / kDegree},
                 {"down_lidar_translation_error_m",
                  {v.downTranslationError.x(), v.downTranslationError.y(), v.downTranslationError.z()}}};
   return j.dump(2) + "\n";

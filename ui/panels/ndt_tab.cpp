@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/map/hd_map.h"
 #include "engine/map/ndt_grid.h"
@@ -95,8 +96,8 @@ bool drawStartAndLandscape(AppState& state) {
   ImGui::Text("start offset (from the run's prediction)");
   changed |= slider("forward (m)", bench.startOffset.x(), -5.0, 5.0);
   changed |= slider("left (m)", bench.startOffset.y(), -5.0, 5.0);
-  double yawDeg = bench.startOffset.z() / kDeg;
-  if (slider("yaw (deg)", yawDeg, -10.0, 10.0, "%.1f")) bench.startOffset.z() = yawDeg * kDeg, changed = true;
+  double yawDeg = bench.startOffset.z() / kDegree;
+  if (slider("yaw (deg)", yawDeg, -10.0, 10.0, "%.1f")) bench.startOffset.z() = yawDeg * kDegree, changed = true;
   changed |= ImGui::Checkbox("cost landscape", &bench.landscapeEnabled);
   if (bench.landscapeEnabled) {
     changed |= slider("half extent (m)", bench.landscapeOptions.halfExtent, 0.5, 10.0, "%.1f");
@@ -125,8 +126,8 @@ void drawResult(AppState& state) {
   if (inspection->truth) {
     const Eigen::Vector3d e = planarError(*inspection->truth, r.estimate);
     const Eigen::Vector3d e0 = planarError(*inspection->truth, inspection->start);
-    ImGui::Text("error  along %.3f  lateral %.3f m  yaw %.2f", e.x(), e.y(), e.z() / kDeg);
-    ImGui::TextDisabled("start  along %.2f  lateral %.2f m  yaw %.2f", e0.x(), e0.y(), e0.z() / kDeg);
+    ImGui::Text("error  along %.3f  lateral %.3f m  yaw %.2f", e.x(), e.y(), e.z() / kDegree);
+    ImGui::TextDisabled("start  along %.2f  lateral %.2f m  yaw %.2f", e0.x(), e0.y(), e0.z() / kDegree);
   }
 }
 
@@ -154,7 +155,7 @@ void drawHistory(AppState& state) {
     char result[160];
     if (r.error)
       std::snprintf(result, sizeof result, "%s, score %.1f, error %.2f / %.2f m / %.2f deg", r.constraint.c_str(), r.score,
-                    r.error->x(), r.error->y(), r.error->z() / kDeg);
+                    r.error->x(), r.error->y(), r.error->z() / kDegree);
     else
       std::snprintf(result, sizeof result, "%s, score %.1f", r.constraint.c_str(), r.score);
     const std::string label = std::to_string(i) + "  kf " + std::to_string(r.keyframe) + "  " + changes + "\n    " + result + "##h" + std::to_string(i);
