@@ -39,6 +39,21 @@ void hitBox(const SceneBox& b, const Eigen::Vector2d& yawAxis, const Eigen::Vect
   hit = {tNear, PointLabel::Object, std::abs(ld[axis]), b.reflectivity};
 }
 
+// False when the ray cannot reach the box: its horizontal path misses the circle around the box's
+// footprint, or meets it only behind the origin or beyond `best`. A cheap test before hitBox, which
+// needs the box's axes (a sine and a cosine per moving box and ray).
+bool mayHitBox(const SceneBox& b, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double best) {
+  const Eigen::Vector2d rel = b.centre - o.head<2>(), h = d.head<2>();
+  const double r2 = b.halfSize.squaredNorm() * (1.0 + 1e-9) + 1e-12;
+  const double h2 = h.squaredNorm();
+  if (h2 < 1e-18) return rel.squaredNorm() <= r2;
+  const double along = rel.dot(h);
+  const double perp2 = rel.squaredNorm() - along * along / h2;
+  if (perp2 > r2) return false;
+  const double half = std::sqrt((r2 - perp2) / h2), mid = along / h2;  // the circle's chord in t
+  return mid + half >= 0.0 && mid - half <= best;
+}
+
 void hitCylinder(const SceneCylinder& cy, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double& best,
                  RayHit& hit) {
   const Eigen::Vector2d rel = o.head<2>() - cy.centre;
@@ -79,6 +94,7 @@ std::optional<RayHit> castRayObjects(const Scene& scene, std::span<const SceneBo
   RayHit hit;
   bool found = false;
   for (const SceneBox& b : moving) {
+    if (!mayHitBox(b, origin, dir, best)) continue;
     const double before = best;
     hitBox(b, Eigen::Vector2d(std::cos(b.yaw), std::sin(b.yaw)), origin, dir, best, hit);
     found |= best < before;
