@@ -61,21 +61,21 @@ void columnDistances(const DrivableRaster& raster, int colBegin, int colEnd, flo
 
 // The 1-D squared distance transform d(q) = min_p (q - p)^2 + f(p): lower envelope of parabolas.
 struct Envelope {
-  static double intersection(const double* f, int q, int p) {
-    return ((f[q] + double(q) * q) - (f[p] + double(p) * p)) / (2.0 * (q - p));
-  }
   std::vector<int> v;
-  std::vector<double> z;
+  std::vector<double> z, lifted;  // lifted[q] = f(q) + q^2, each parabola's constant part
+  double intersection(int q, int p) const { return (lifted[size_t(q)] - lifted[size_t(p)]) / (2.0 * (q - p)); }
   void transform(const double* f, int n, double* d) {
     v.resize(size_t(n));
     z.resize(size_t(n) + 1);
+    lifted.resize(size_t(n));
+    for (int q = 0; q < n; ++q) lifted[size_t(q)] = f[q] + double(q) * q;
     int k = 0;
     v[0] = 0;
     z[0] = -std::numeric_limits<double>::infinity();
     z[1] = std::numeric_limits<double>::infinity();
     for (int q = 1; q < n; ++q) {
-      double s = intersection(f, q, v[size_t(k)]);
-      while (s <= z[size_t(k)]) s = intersection(f, q, v[size_t(--k)]);
+      double s = intersection(q, v[size_t(k)]);
+      while (s <= z[size_t(k)]) s = intersection(q, v[size_t(--k)]);
       ++k;
       v[size_t(k)] = q;
       z[size_t(k)] = s;
