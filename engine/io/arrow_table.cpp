@@ -26,6 +26,7 @@ bool matches(Type type) {
   if constexpr (std::is_same_v<T, uint64_t>) return type == Type::UInt64;
   if constexpr (std::is_same_v<T, float>) return type == Type::Float32;
   if constexpr (std::is_same_v<T, double>) return type == Type::Float64;
+  if constexpr (std::is_same_v<T, bool>) return type == Type::Bool;
   return false;
 }
 
@@ -41,6 +42,7 @@ const char* cppName() {
   if constexpr (std::is_same_v<T, uint64_t>) return "uint64_t";
   if constexpr (std::is_same_v<T, float>) return "float";
   if constexpr (std::is_same_v<T, double>) return "double";
+  if constexpr (std::is_same_v<T, bool>) return "bool";
   return "?";
 }
 
@@ -134,6 +136,7 @@ std::string_view typeName(Type type) {
     case Type::Float32: return "float32";
     case Type::Float64: return "float64";
     case Type::Utf8: return "utf8";
+    case Type::Bool: return "bool";
   }
   return "unknown";
 }
@@ -141,7 +144,8 @@ std::string_view typeName(Type type) {
 size_t byteWidth(Type type) {
   switch (type) {
     case Type::Int8:
-    case Type::UInt8: return 1;
+    case Type::UInt8:
+    case Type::Bool: return 1;
     case Type::Int16:
     case Type::UInt16:
     case Type::Float16: return 2;
@@ -196,6 +200,7 @@ std::vector<double> Column::toDouble() const {
     case Type::UInt64: widen<uint64_t>(*this, out); break;
     case Type::Float32: widen<float>(*this, out); break;
     case Type::Float64: widen<double>(*this, out); break;
+    case Type::Bool: widen<bool>(*this, out); break;
     case Type::Float16: {
       const std::span<const uint16_t> v = as<uint16_t>();
       for (size_t i = 0; i < v.size(); ++i) out[i] = halfToFloat(v[i]);
@@ -340,6 +345,7 @@ HDPRIOR_ARROW_INSTANTIATE(uint32_t)
 HDPRIOR_ARROW_INSTANTIATE(uint64_t)
 HDPRIOR_ARROW_INSTANTIATE(float)
 HDPRIOR_ARROW_INSTANTIATE(double)
+HDPRIOR_ARROW_INSTANTIATE(bool)
 #undef HDPRIOR_ARROW_INSTANTIATE
 
 }  // namespace hdprior::arrow

@@ -7,9 +7,10 @@
 
 namespace hdprior::arrow {
 
-// The column types hdprior reads and writes (a strict subset of Arrow's).
+// The column types hdprior reads and writes (a strict subset of Arrow's). A Bool column holds one
+// byte per row (0 or 1) here; the file packs it into bits.
 enum class Type : uint8_t {
-  Int8, Int16, Int32, Int64, UInt8, UInt16, UInt32, UInt64, Float16, Float32, Float64, Utf8,
+  Int8, Int16, Int32, Int64, UInt8, UInt16, UInt32, UInt64, Float16, Float32, Float64, Utf8, Bool,
 };
 
 std::string_view typeName(Type type);

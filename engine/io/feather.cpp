@@ -88,6 +88,8 @@ FieldSpec parseField(const fb::Table& f, const ByteView& file) {
     spec.type = floatType(*type, file, spec.name);
   } else if (tag == kTypeUtf8) {
     spec.type = Type::Utf8;
+  } else if (tag == kTypeBool) {
+    spec.type = Type::Bool;
   } else if (tag == kTypeDecimal) {
     file.fail("unsupported type Decimal" + std::to_string(type->scalar<int32_t>(2, 128)) + " in column '" + spec.name + "'");
   } else {
@@ -267,6 +269,12 @@ Column decodeColumn(const FieldSpec& spec, int64_t length, int64_t nulls, BodyRe
     if (length % 8 != 0) c.validity.back() &= uint8_t((1u << (length % 8)) - 1);
   }
   ++buffer;
+  if (spec.type == Type::Bool) {  // bit-packed in the file, a byte per row here
+    const std::span<const uint8_t> bits = body.get(buffer++, validityBytes, col + " values");
+    c.values.resize(size_t(length));
+    for (int64_t i = 0; i < length; ++i) c.values[size_t(i)] = (bits[size_t(i >> 3)] >> (i & 7)) & 1;
+    return c;
+  }
   if (spec.type != Type::Utf8) {
     const uint64_t bytes = uint64_t(length) * byteWidth(spec.type);
     const std::span<const uint8_t> values = body.get(buffer++, bytes, col + " values");

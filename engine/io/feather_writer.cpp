@@ -40,6 +40,9 @@ fb::TableBuilder fieldTable(const Column& c) {
       break;
     case Type::Utf8:
       break;
+    case Type::Bool:
+      tag = kTypeBool;
+      break;
     default: {
       const bool isSigned = c.type == Type::Int8 || c.type == Type::Int16 || c.type == Type::Int32 || c.type == Type::Int64;
       tag = kTypeInt;
@@ -159,6 +162,15 @@ void checkColumn(const Column& c, int64_t rows, const std::string& source) {
   }
 }
 
+// A Bool column's bytes (0 or 1) packed LSB-first, as Arrow stores Bool values.
+std::vector<uint8_t> packedBits(const std::vector<uint8_t>& bytes) {
+  std::vector<uint8_t> bits(size_t(bitmapBytes(int64_t(bytes.size()))), 0);
+  for (size_t i = 0; i < bytes.size(); ++i) {
+    if (bytes[i]) bits[i >> 3] |= uint8_t(1u << (i & 7));
+  }
+  return bits;
+}
+
 // Appends one column's field node and buffers; `part` holds exactly this batch's rows.
 void addColumn(const Column& part, std::vector<uint8_t>& nodes, BodyBuilder& body) {
   const int64_t nulls = part.nullCount();
@@ -168,6 +180,8 @@ void addColumn(const Column& part, std::vector<uint8_t>& nodes, BodyBuilder& bod
   if (part.type == Type::Utf8) {
     body.add(asBytes(part.offsets, part.offsets.size()));
     body.add(asBytes(part.values, size_t(part.offsets.back())));
+  } else if (part.type == Type::Bool) {
+    body.add(packedBits(part.values));
   } else {
     body.add(asBytes(part.values, part.values.size()));
   }

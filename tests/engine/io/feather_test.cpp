@@ -74,10 +74,14 @@ Table syntheticTable() {
   std::vector<std::string> s;
   for (int64_t i = 0; i < n; ++i) s.push_back(i % 5 == 0 ? "" : "row " + std::to_string(i) + (i % 2 ? " ü" : ""));
   t.columns.push_back(Column::fromStrings("utf8", s));
+  Column flags{.name = "flag", .type = Type::Bool, .length = n};
+  for (int64_t i = 0; i < n; ++i) flags.values.push_back(uint8_t(i % 3 == 0 || i == n - 1));
+  t.columns.push_back(flags);
   setNulls(t.columns[2], 3, 0);
   setNulls(t.columns[8], 7, 1);
   setNulls(t.columns[10], 2, 1);
   setNulls(t.columns[11], 4, 2);
+  setNulls(t.columns[12], 5, 1);
   t.columns[5].nullable = true;  // nullable without nulls
   return t;
 }
@@ -123,6 +127,22 @@ TEST(FeatherReal, PosesAndCalibration) {
   EXPECT_NE(std::find(sensors.begin(), sensors.end(), "up_lidar"), sensors.end());
   EXPECT_NE(std::find(sensors.begin(), sensors.end(), "down_lidar"), sensors.end());
   EXPECT_EQ(calib.column("qw", Type::Float64, kCalibration).length, calib.numRows);
+}
+
+// The real ground labels beside the log (Argoverse 2 scene flow, pyarrow-written): bool columns are
+// bit-packed in the file and read as one byte per row.
+TEST(FeatherReal, GroundLabelsWithBoolColumns) {
+  const std::filesystem::path file = test::sharedDataDir() / "labels/7fab2350-7eaf-3b7e-a39d-6937a4c1bede/flow_labels.feather";
+  const Table t = readFeather(file);
+  ASSERT_EQ(t.numRows, 99229);
+  const std::span<const bool> ground = t.column("is_ground_0", Type::Bool, file.string()).as<bool>();
+  EXPECT_EQ(std::count(ground.begin(), ground.end(), true), 17374);
+  const std::span<const bool> dynamic = t.column("dynamic", Type::Bool, file.string()).as<bool>();
+  EXPECT_EQ(std::count(dynamic.begin(), dynamic.end(), true), 2037);
+  EXPECT_EQ(t.column("classes", Type::UInt8, file.string()).length, 99229);
+  for (Compression c : {Compression::None, Compression::Lz4Frame}) {
+    expectSameTable(t, parseFeather(serializeFeather(t, c, 1000), "labels"), "labels");
+  }
 }
 
 TEST(FeatherReal, MissingFileIsAnError) {
@@ -400,8 +420,8 @@ TEST(FeatherCrafted, UnsupportedSchemasAreNamed) {
   EXPECT_EQ(errorOf(c.bytes()), "unsupported type Decimal128 in column 'd'");
   c.fields = {field("s", 13, fb::TableBuilder{})};
   EXPECT_EQ(errorOf(c.bytes()), "unsupported type Struct in column 's'");
-  c.fields = {field("b", 6, fb::TableBuilder{})};
-  EXPECT_EQ(errorOf(c.bytes()), "unsupported type Bool in column 'b'");
+  c.fields = {field("b", 4, fb::TableBuilder{})};
+  EXPECT_EQ(errorOf(c.bytes()), "unsupported type Binary in column 'b'");
   c.fields = {field("i", 2, fb::TableBuilder{}.scalar<int32_t>(0, 12))};
   EXPECT_EQ(errorOf(c.bytes()), "unsupported Int bit width 12 in column 'i'");
   c.fields = {int32Field("a").table(4, fb::TableBuilder{}.scalar<int64_t>(0, 0))};
