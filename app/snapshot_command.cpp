@@ -10,6 +10,7 @@
 #include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
+#include "engine/io/ground_labels.h"
 #include "engine/map/hd_map.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
@@ -45,7 +46,7 @@ bool anyNeedsAnalysis(const std::vector<std::string>& layers) {
 }
 
 struct SnapshotArguments {
-  std::string log, out, size = "1280x720", view = "top", layers, odometry, session;
+  std::string log, out, size = "1280x720", view = "top", layers, odometry, session, groundLabels;
   std::optional<size_t> frame, keyframe;
   ConfigArguments config;
   OdometryFileArguments odometryFile;
@@ -89,7 +90,8 @@ render::Comparison sessionComparison(const ArgoverseLog& log, const ui::ViewSess
 int runSessionSnapshot(const SnapshotArguments& a) {
   for (const auto& [given, name] : {std::pair{a.frame.has_value(), "--frame"}, {a.keyframe.has_value(), "--keyframe"},
                                     {!a.layers.empty(), "--layers"}, {a.view != "top", "--view"},
-                                    {!a.config.file.empty(), "--config"}, {!a.odometry.empty(), "--odometry"}})
+                                    {!a.config.file.empty(), "--config"}, {!a.odometry.empty(), "--odometry"},
+                                    {!a.groundLabels.empty(), "--ground-labels"}})
     if (given) throw Error("option --session", std::string("cannot be combined with ") + name + " (the session sets it)");
   const ui::ViewSession s = ui::readViewSession(a.session);
   render::SnapshotOptions options;
@@ -143,6 +145,14 @@ int runSnapshot(const SnapshotArguments& a) {
   const std::optional<GivenOdometry> given =
       !a.odometry.empty() ? std::optional(givenOdometryOf(a.odometry, odometryFile, log)) : std::nullopt;
   if (given) givenOdometryInCity(*given, log);  // the file covers the sweeps: checked before the map loads
+  options.roadPoints = config.roadPoints;
+  if (!a.groundLabels.empty()) {
+    if (!a.frame) throw Error("option --ground-labels", "needs --frame (the sweep the labels are of)");
+    options.groundLabels = readGroundLabels(a.groundLabels, log.sweep(*a.frame)->points.size());
+    options.groundLabelsFrame = *a.frame;
+    if (std::find(options.layers.begin(), options.layers.end(), "ground_labels") == options.layers.end())
+      options.layers = render::parseLayerList(a.layers.empty() ? "drivable,boundary,ego,ground_labels" : a.layers + ",ground_labels");
+  }
   const bool analysisNeeded = keyframe || anyNeedsAnalysis(options.layers);
   const bool ndtCells = std::find(options.layers.begin(), options.layers.end(), "ndt_cells") != options.layers.end();
   // The pipeline and the NDT cells need the matcher's map; the others load faster without it.
@@ -183,11 +193,15 @@ Command addSnapshotCommand(CLI::App& hdprior) {
       ->check(parsedBy([](const std::string& text) { render::parseView(text); }));
   command->add_option("--layers", a->layers,
                       "all (ground, drivable, boundary, lanes, trajectory, sweep, ego) or a list that may also name crossings, "
-                      "accumulated, ndt_cells, landscape, odometry_trajectory, optimized_trajectory, file_trajectory, keyframes, road_points, match "
+                      "accumulated, ndt_cells, landscape, odometry_trajectory, optimized_trajectory, file_trajectory, keyframes, road_points, match, ground_labels "
                       "(default: all for top and orbit; drivable,landscape,boundary,road_points,match for landscape; "
                       "drivable,boundary,keyframes,road_points,match for inspector)")
       ->type_name("a,b,c")
       ->check(parsedBy([](const std::string& text) { render::parseLayerList(text); }));
+  command->add_option("--ground-labels", a->groundLabels,
+                      "reference ground labels of the --frame sweep (an Argoverse 2 scene-flow flow_labels.feather, is_ground_0): "
+                      "draws the ground_labels layer, the sweep's ground (or road) points coloured by agreement")
+      ->type_name("FILE");
   addConfigOption(*command, a->config);
   addGivenOdometryOptions(*command, a->odometry, a->odometryFile,
                           "run the pipeline over this trajectory file "

@@ -11,6 +11,7 @@
 #include "render/layers/ego_pose_layer.h"
 #include "render/layers/estimated_trajectory_layer.h"
 #include "render/layers/ground_height_layer.h"
+#include "render/layers/ground_labels_layer.h"
 #include "render/layers/keyframes_layer.h"
 #include "render/layers/landscape_layer.h"
 #include "render/layers/lane_centerline_layer.h"
@@ -67,6 +68,7 @@ const std::vector<Entry>& registry() {
       analysisEntry<KeyframesLayer>(),
       entry<AccumulatedSweepsLayer>(false),
       entry<LidarSweepLayer>(),
+      entry<GroundLabelsLayer>(false),
       analysisEntry<RoadPointsLayer>(),
       analysisEntry<MatchLayer>(),
       {MatchLayer::kComparisonName, [] { return std::make_unique<MatchLayer>(true); }, false, true},

@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "engine/geom/se3.h"
+#include "engine/lidar/sweep_road_points.h"
 
 namespace hdprior {
 class ArgoverseLog;
@@ -21,6 +23,11 @@ struct Scene {
   const ArgoverseLog* log = nullptr;
   const HdMap* map = nullptr;
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  // How the sweeps' ground and road points are labelled (the configuration's road_points).
+  SweepRoadPointOptions roadPoints;
+  // Reference ground labels of one frame's sweep, one byte per point (the ground_labels layer).
+  std::vector<uint8_t> groundLabels;
+  size_t groundLabelsFrame = 0;
 
   Eigen::Vector3f local(const Eigen::Vector3d& city) const { return (city - origin).cast<float>(); }
   // The map's ground height at a city (x, y), or `fallback` where it has none.

@@ -64,7 +64,11 @@ Camera viewCamera(View view, const Scene& scene, const Frame& frame, double aspe
 
 struct Snapshotter::State {
   State(const SnapshotOptions& o, const ArgoverseLog& log, const HdMap& map)
-      : options(o), context(o.width, o.height), scene(makeScene(log, map)) {}
+      : options(o), context(o.width, o.height), scene(makeScene(log, map)) {
+    scene.roadPoints = o.roadPoints;
+    scene.groundLabels = o.groundLabels;
+    scene.groundLabelsFrame = o.groundLabelsFrame;
+  }
   SnapshotOptions options;
   OffscreenContext context;
   Scene scene;

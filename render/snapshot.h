@@ -33,6 +33,9 @@ struct SnapshotOptions {
   std::vector<std::string> layers;  // names in drawing order; empty = all
   bool overlay = true;               // colour bars, scale bar and marker legend over the view
   std::map<std::string, float> opacity;  // per layer name; 1 where not given
+  SweepRoadPointOptions roadPoints;      // how the ground_labels layer labels a sweep
+  std::vector<uint8_t> groundLabels;     // the reference ground labels of frame groundLabelsFrame
+  size_t groundLabelsFrame = 0;
 };
 
 // Parses "WIDTHxHEIGHT"; throws Error("option --size", ...) unless both are in 16..8192.

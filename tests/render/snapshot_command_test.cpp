@@ -26,6 +26,27 @@ TEST(SnapshotCommand, WritesThePngOfTheGolden) {
   EXPECT_EQ(checkGolden(image, "frame0_top_all"), "");
 }
 
+// The first real sweep's ground segmentation against its real labels (is_ground_0): agreeing
+// ground green, ground the labels deny red, labelled ground missed amber, the rest grey.
+TEST(SnapshotCommand, ColoursTheGroundSegmentationAgainstRealLabels) {
+  const fs::path dir = freshOutputDir("snapshot_command_ground_labels");
+  const fs::path labels = sharedDataDir() / "labels/7fab2350-7eaf-3b7e-a39d-6937a4c1bede/flow_labels.feather";
+  const fs::path out = dir / "labels.png";
+  const CommandResult r = runHdprior("snapshot " + quoted(sharedLog()) + " --frame 0 --size 640x360 --view orbit --ground-labels " +
+                                     quoted(labels) + " --out " + quoted(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(checkGolden(readPng(out), "real_ground_labels_orbit"), "");
+  // The labels are of sweep 0 alone: another sweep's point count is named, and nothing is written.
+  const fs::path other = dir / "other.png";
+  EXPECT_TRUE(failedWithOneLine(runHdprior("snapshot " + quoted(sharedLog()) + " --frame 1 --ground-labels " + quoted(labels) +
+                                           " --out " + quoted(other)),
+                                labels.string() + ": has 99229 rows, the sweep 99466 points"));
+  EXPECT_FALSE(fs::exists(other));
+  EXPECT_TRUE(failedWithOneLine(runHdprior("snapshot " + quoted(sharedLog()) + " --keyframe 0 --ground-labels " + quoted(labels) +
+                                           " --out " + quoted(other)),
+                                "option --ground-labels: needs --frame"));
+}
+
 // The landscape view of a keyframe: the pipeline runs inside the command (the matcher untimed by
 // the config file, as in the golden test).
 TEST(SnapshotCommand, DrawsTheLandscapeViewOfAKeyframe) {
