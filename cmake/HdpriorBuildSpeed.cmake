@@ -1,8 +1,9 @@
 # Build-speed switches (issue 33), on by default; each can be turned off to compare or to debug:
 #   HDPRIOR_PCH    precompiled headers for the heavy headers every target's files share
-#   HDPRIOR_UNITY  unity builds where they pay (the command's files: CLI11 compiled once, not 16 times)
+#   HDPRIOR_UNITY  unity builds where they pay (the command's files: CLI11 compiled once, not 16 times;
+#                  the engine's, the tests' and the sanitized I/O code's files)
 option(HDPRIOR_PCH "Precompiled headers for the heavy common headers" ON)
-option(HDPRIOR_UNITY "Unity builds for the targets where they pay (the app's command files)" ON)
+option(HDPRIOR_UNITY "Unity builds for the targets where they pay (the command, the engine, the tests)" ON)
 
 # The standard headers most files include; every precompiled header starts with them.
 set(HDPRIOR_PCH_STD <algorithm> <array> <cmath> <cstdint> <cstdio> <filesystem> <functional> <limits>
@@ -13,6 +14,15 @@ set(HDPRIOR_PCH_STD <algorithm> <array> <cmath> <cstdint> <cstdio> <filesystem> 
 function(hdprior_precompile target)
   if(HDPRIOR_PCH)
     target_precompile_headers(${target} PRIVATE ${ARGN})
+  endif()
+endfunction()
+
+# hdprior_unity(target batch_size): the target's .cpp files are compiled batch_size at a time, each
+# batch as one translation unit (headers parsed and templates instantiated once per batch, not per
+# file). No-op with HDPRIOR_UNITY off.
+function(hdprior_unity target batch_size)
+  if(HDPRIOR_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch_size})
   endif()
 endfunction()
 

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <vector>
 
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
@@ -21,8 +21,6 @@
 namespace hdprior {
 namespace {
 namespace fs = std::filesystem;
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Case {
   std::vector<Eigen::Vector2d> points, curbs;
@@ -49,7 +47,7 @@ const Fixture& fixture() {
       const PlanarRoadPoints points = sweepRoadPoints(*sweep, levelRotation(truth3), SweepRoadPointOptions{});
       for (double lateral : {-1.5, 0.0, 1.5}) {
         for (double yawDeg : {-3.0, 0.0, 3.0}) {
-          f.cases.push_back({points.road, points.curb, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDeg})});
+          f.cases.push_back({points.road, points.curb, truth, offsetPose(truth, {0.0, lateral, yawDeg * kDegree})});
         }
       }
     }
@@ -87,8 +85,8 @@ void runMatches(benchmark::State& state, MatchBackend backend, size_t pointCap =
     ++n;
     along += std::abs(e.x());
     lateral += std::abs(e.y());
-    yaw += std::abs(e.z()) / kDeg;
-    ok += std::abs(e.y()) < 0.25 && std::abs(e.z()) < 0.5 * kDeg;
+    yaw += std::abs(e.z()) / kDegree;
+    ok += std::abs(e.y()) < 0.25 && std::abs(e.z()) < 0.5 * kDegree;
   }
   state.counters["lateral_m"] = lateral / double(n);
   state.counters["along_m"] = along / double(n);

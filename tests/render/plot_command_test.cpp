@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "bad_input.h"
 #include "render/image_compare.h"
 #include "synthetic_diagnostics.h"
 #include "test_data.h"
@@ -60,18 +61,12 @@ TEST(PlotCommand, PlotsTheRunFolderOfARealRun) {
   EXPECT_GT(readPng(out).height, 300);
 }
 
-struct BadInput {
-  const char* name;
-  std::string args;     // {A}: a good run folder, {D}: the test's folder; --out is added
-  const char* message;  // in the one line on stderr
-};
-void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
-
 std::string substituted(std::string s, const std::string& key, const std::string& value) {
   for (size_t at = s.find(key); at != std::string::npos; at = s.find(key, at + value.size())) s.replace(at, key.size(), value);
   return s;
 }
 
+// BadInput::args: {A} is a good run folder, {D} the test's folder; --out is added.
 class PlotCommandBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(PlotCommandBadInput, FailsWithOneLineAndNoFile) {

@@ -6,6 +6,7 @@
 #include <ostream>
 #include <string>
 
+#include "bad_input.h"
 #include "render/image_compare.h"
 #include "test_data.h"
 
@@ -78,13 +79,7 @@ TEST(SnapshotCommand, DrawsAnOdometryFileAsItsLayer) {
   EXPECT_GT(magenta, 40u);  // a 16 m line at 4.75 px/m
 }
 
-struct BadInput {
-  const char* name;
-  std::string args;  // after LOG; --out is added
-  const char* message;
-};
-void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
-
+// BadInput::args: after LOG; --out is added.
 class SnapshotCommandBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(SnapshotCommandBadInput, FailsWithOneLineAndNoFile) {

@@ -23,8 +23,8 @@ namespace hdprior::test {
 namespace {
 namespace fs = std::filesystem;
 
-// The numbers following `key` in `text` (the first occurrence), as many as asked for.
-std::vector<double> numbersAfter(const std::string& text, const std::string& key, size_t count) {
+// The words after `key` in `text` (its first occurrence) that are numbers, as many as asked for.
+std::vector<double> numericWordsAfter(const std::string& text, const std::string& key, size_t count) {
   std::vector<double> out;
   const size_t at = text.find(key);
   if (at == std::string::npos) return out;
@@ -78,7 +78,7 @@ TEST(DebuggingBench, CompareRunsBAsRunDoesAndDrawsIt) {
                                              quoted(dir / "script.txt") + " --screenshot " + quoted(dir / "compare_tab.png"),
                                          dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::vector<double> ab = numbersAfter(r.out, "compare: A ate_rmse", 2);
+  const std::vector<double> ab = numericWordsAfter(r.out, "compare: A ate_rmse", 2);
   ASSERT_EQ(ab.size(), 2u) << r.out;
 
   for (const auto& [config, out] : {std::pair{"a.json", "runA"}, std::pair{"b.json", "runB"}}) {
@@ -99,8 +99,8 @@ TEST(DebuggingBench, CompareRunsBAsRunDoesAndDrawsIt) {
             pixelsNear(a, 310, kViewBottom, 1280 - 360, 800 - 88, 77, 255, 191, 30) + 100)
       << after;
 
-  const std::vector<double> error = numbersAfter(r.out, "match error: along", 2);
-  const std::vector<double> measured = numbersAfter(r.out, "measure: distance", 3);
+  const std::vector<double> error = numericWordsAfter(r.out, "match error: along", 2);
+  const std::vector<double> measured = numericWordsAfter(r.out, "measure: distance", 3);
   ASSERT_EQ(error.size(), 2u) << r.out;
   ASSERT_EQ(measured.size(), 3u) << r.out;
   EXPECT_NEAR(measured[1], -error[0], 1e-3) << r.out;  // along: from the estimate to the truth
@@ -141,7 +141,7 @@ TEST(DebuggingBench, MeasureAndPickOnTheRealLog) {
   const CommandResult r =
       runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt") + " --screenshot " + quoted(after), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::vector<double> m = numbersAfter(r.out, "measure: distance", 3);
+  const std::vector<double> m = numericWordsAfter(r.out, "measure: distance", 3);
   ASSERT_EQ(m.size(), 3u) << r.out;
   EXPECT_NEAR(m[0], std::sqrt(13.0), 0.01);
   EXPECT_NEAR(m[1], 3.0, 0.01);

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bad_input.h"
 #include "engine/sim/demo_log.h"
 #include "render/image_compare.h"
 #include "display_run.h"
@@ -297,14 +298,7 @@ TEST(ViewCommand, ScriptStopsAtACorruptSweep) {
   EXPECT_FALSE(fs::exists(shot));
 }
 
-struct BadViewInput {
-  const char* name;
-  std::string args;
-  const char* message;
-};
-void PrintTo(const BadViewInput& b, std::ostream* os) { *os << b.name; }
-
-class ViewCommandBadInput : public ::testing::TestWithParam<BadViewInput> {};
+class ViewCommandBadInput : public ::testing::TestWithParam<BadInput> {};
 
 // Refused before any window opens: one line, exit 2, no display needed.
 TEST_P(ViewCommandBadInput, FailsWithOneLine) {
@@ -326,22 +320,22 @@ TEST_P(ViewCommandBadInput, FailsWithOneLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, ViewCommandBadInput,
-    ::testing::Values(BadViewInput{"missing_log", "/nonexistent/log --frames 1 --exit", "not a log directory"},
-                      BadViewInput{"bad_script", "LOG --script DIR/bad_script.txt", "line 2: unknown command 'fly'"},
-                      BadViewInput{"missing_script", "LOG --script DIR/none.txt", "none.txt"},
-                      BadViewInput{"script_and_frames", "LOG --script DIR/bad_script.txt --frames 2", "--script"},
-                      BadViewInput{"bad_frames", "LOG --frames 0 --exit", "--frames"},
-                      BadViewInput{"screenshot_folder", "LOG --frames 1 --exit --screenshot DIR/no/x.png",
+    ::testing::Values(BadInput{"missing_log", "/nonexistent/log --frames 1 --exit", "not a log directory"},
+                      BadInput{"bad_script", "LOG --script DIR/bad_script.txt", "line 2: unknown command 'fly'"},
+                      BadInput{"missing_script", "LOG --script DIR/none.txt", "none.txt"},
+                      BadInput{"script_and_frames", "LOG --script DIR/bad_script.txt --frames 2", "--script"},
+                      BadInput{"bad_frames", "LOG --frames 0 --exit", "--frames"},
+                      BadInput{"screenshot_folder", "LOG --frames 1 --exit --screenshot DIR/no/x.png",
                                    "folder does not exist"},
-                      BadViewInput{"bad_size", "LOG --size 12xfoo", "--size"},
-                      BadViewInput{"missing_config", "LOG --frames 1 --exit --config DIR/none.json", "none.json"},
-                      BadViewInput{"bad_config", "LOG --frames 1 --exit --config DIR/bad_config.json", "outlier_ratio"},
-                      BadViewInput{"bad_odometry", "LOG --frames 1 --exit --odometry DIR/bad.tum", "bad.tum:2: expected 8 fields"},
-                      BadViewInput{"missing_odometry", "LOG --frames 1 --exit --odometry DIR/none.tum", "none.tum"},
-                      BadViewInput{"uncovered_odometry", "LOG --frames 1 --exit --odometry DIR/early.tum", "must cover every sweep"},
-                      BadViewInput{"odometry_frame", "LOG --frames 1 --exit --odometry DIR/early.tum --odometry-frame up",
+                      BadInput{"bad_size", "LOG --size 12xfoo", "--size"},
+                      BadInput{"missing_config", "LOG --frames 1 --exit --config DIR/none.json", "none.json"},
+                      BadInput{"bad_config", "LOG --frames 1 --exit --config DIR/bad_config.json", "outlier_ratio"},
+                      BadInput{"bad_odometry", "LOG --frames 1 --exit --odometry DIR/bad.tum", "bad.tum:2: expected 8 fields"},
+                      BadInput{"missing_odometry", "LOG --frames 1 --exit --odometry DIR/none.tum", "none.tum"},
+                      BadInput{"uncovered_odometry", "LOG --frames 1 --exit --odometry DIR/early.tum", "must cover every sweep"},
+                      BadInput{"odometry_frame", "LOG --frames 1 --exit --odometry DIR/early.tum --odometry-frame up",
                                    "first or city"},
-                      BadViewInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"}),
+                      BadInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // The events a run has, counted from its keyframes.json alone: rejected and gated keyframes, changes in

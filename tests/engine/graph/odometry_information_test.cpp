@@ -3,18 +3,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "../geom/forward_step.h"
+#include "engine/geom/angles.h"
 #include "engine/graph/odometry_information.h"
 
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-SE3 forward(double metres) {
-  SE3 T = SE3::Identity();
-  T.translation() = Eigen::Vector3d(metres, 0, 0);
-  return T;
-}
+using test::forward;
 
 }  // namespace
 
@@ -25,7 +21,7 @@ TEST(OdometryInformation, DriftModelGrowsWithTheDistance) {
   o.odometryRotationSigmaDegPerM = 0.01;
   const auto v = odometryDriftVariances(2.0, o);
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(v[i], std::pow(0.02 * kDeg, 2), 1e-18) << i;
+    EXPECT_NEAR(v[i], std::pow(0.02 * kDegree, 2), 1e-18) << i;
     EXPECT_NEAR(v[3 + i], 0.01 * 0.01, 1e-15) << i;
   }
   EXPECT_TRUE(odometryDriftVariances(0.0, o).isZero());  // no step, no drift
@@ -51,7 +47,7 @@ TEST(OdometryInformation, ReordersTheCovarianceAndAddsTheModel) {
   model.odometryRotationSigmaDegPerM = 0.005;
   const Matrix6d modelOnly = odometryInformation(Matrix6d::Zero(), forward(2.0), model);
   EXPECT_NEAR(modelOnly(4, 4), 1.0 / 4e-4, 1e-6);
-  EXPECT_NEAR(modelOnly(0, 0), 1.0 / std::pow(0.01 * kDeg, 2), 1e-3);
+  EXPECT_NEAR(modelOnly(0, 0), 1.0 / std::pow(0.01 * kDegree, 2), 1e-3);
   // Nothing at all (no covariance, no model, or not finite): weak.
   PoseGraphOptions noModel;
   noModel.odometryTranslationSigmaPerM = noModel.odometryRotationSigmaDegPerM = 0.0;

@@ -2,12 +2,12 @@
 // between factors against central differences, yaw wrapping, the HD-map prior built from a
 // match and the ground height (on the real log), and PGO recovering a known trajectory from
 // noisy odometry plus priors, incrementally and in batch.
+#include "engine/geom/angles.h"
 #include "engine/graph/pose_graph.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
 #include <ceres/ceres.h>
@@ -23,8 +23,6 @@
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 SE3 poseOf(double x, double y, double z, double yaw, double pitch = 0.0, double roll = 0.0) {
   SE3 T = SE3::Identity();
@@ -102,22 +100,22 @@ TEST(PoseFactors, ResidualsVanishAtTheMeasurementAndYawWraps) {
   EXPECT_LT(residual6.head<3>().norm(), 1e-12);
   EXPECT_TRUE(residual6.tail<3>().isApprox(Eigen::Vector3d(0.1, 0, 0), 1e-9)) << residual6.transpose();
 
-  const PriorFactor prior(poseOf(0, 0, 0, 179 * kDeg), Eigen::Matrix4d::Identity());
-  Eigen::Quaterniond q(poseOf(0, 0, 0, -179 * kDeg).rotation());
+  const PriorFactor prior(poseOf(0, 0, 0, 179 * kDegree), Eigen::Matrix4d::Identity());
+  Eigen::Quaterniond q(poseOf(0, 0, 0, -179 * kDegree).rotation());
   Eigen::Vector3d t(0, 0, 0);
   double r4[4];
   const Eigen::Vector2d noMapError = Eigen::Vector2d::Zero();
   prior(q.coeffs().data(), t.data(), noMapError.data(), r4);
-  EXPECT_NEAR(r4[0], 2 * kDeg, 1e-12);  // not -358 degrees
+  EXPECT_NEAR(r4[0], 2 * kDegree, 1e-12);  // not -358 degrees
 }
 
 TEST(PosePrior, ResidualIsWhatItsFactorWhitensAndItsChi2) {
   PosePrior prior;
-  prior.pose = poseOf(10, 20, 1, 179 * kDeg, 0.02, -0.01);
+  prior.pose = poseOf(10, 20, 1, 179 * kDegree, 0.02, -0.01);
   prior.information = Eigen::Vector4d(100, 4, 9, 25).asDiagonal();
-  const SE3 at = poseOf(10.5, 19.7, 1.2, -178 * kDeg, 0.03, 0.01);
+  const SE3 at = poseOf(10.5, 19.7, 1.2, -178 * kDegree, 0.03, 0.01);
   const PriorResidual r = priorResidual(prior, at);
-  EXPECT_NEAR(r.error(0), 3 * kDeg, 1e-9);
+  EXPECT_NEAR(r.error(0), 3 * kDegree, 1e-9);
   EXPECT_NEAR(r.error(1), 0.5, 1e-12);
   EXPECT_NEAR(r.error(2), -0.3, 1e-12);
   EXPECT_NEAR(r.error(3), 0.2, 1e-12);
@@ -129,7 +127,7 @@ TEST(PosePrior, ResidualIsWhatItsFactorWhitensAndItsChi2) {
   const Eigen::Vector2d noMapError = Eigen::Vector2d::Zero();
   factor(q.coeffs().data(), t.data(), noMapError.data(), whitened.data());
   EXPECT_NEAR(r.chi2, whitened.squaredNorm(), 1e-9);
-  EXPECT_NEAR(r.chi2, 100 * std::pow(3 * kDeg, 2) + 4 * 0.25 + 9 * 0.09 + 25 * 0.04, 1e-9);
+  EXPECT_NEAR(r.chi2, 100 * std::pow(3 * kDegree, 2) + 4 * 0.25 + 9 * 0.09 + 25 * 0.04, 1e-9);
 }
 
 TEST(PosePrior, AltitudeFromTheRealGroundHeightMatchesTheGroundTruth) {
@@ -244,10 +242,10 @@ Scenario makeScenario(int n) {
   for (int k = 0; k < n; k += 4) {
     PosePrior p;
     const SE3& t = s.truth[size_t(k)];
-    p.pose = t * poseOf(0.1 * unit(rng), 0.1 * unit(rng), 0.05 * unit(rng), 0.3 * kDeg * unit(rng));
+    p.pose = t * poseOf(0.1 * unit(rng), 0.1 * unit(rng), 0.05 * unit(rng), 0.3 * kDegree * unit(rng));
     p.pose.linear() = Eigen::AngleAxisd(yawOf(p.pose), Eigen::Vector3d::UnitZ()).toRotationMatrix() *
                       levelRotation(s.odometryPoses[size_t(k)]);
-    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 100, 100, 400).asDiagonal();
+    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDegree, 2), 100, 100, 400).asDiagonal();
     s.priors.push_back(p);
   }
   return s;
@@ -368,7 +366,7 @@ double meanLateralShift(double mapErrorLength, double lateralBias, double sigmaG
   PoseGraph graph(o);
   const SE3 step = poseOf(2.0, 0, 0, 0);
   Matrix6d info = Matrix6d::Zero();
-  info.diagonal() << 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2),
+  info.diagonal() << 1 / std::pow(0.05 * kDegree, 2), 1 / std::pow(0.05 * kDegree, 2), 1 / std::pow(0.05 * kDegree, 2),
       1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2), 1 / std::pow(0.01, 2);
   const int n = 51;
   for (int k = 0; k < n; ++k) {
@@ -377,7 +375,7 @@ double meanLateralShift(double mapErrorLength, double lateralBias, double sigmaG
     if (k > 0) graph.addOdometry(size_t(k) - 1, size_t(k), step, info);
     PosePrior p;
     p.pose = poseOf(2.0 * k, lateralBias, 0, 0);
-    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 0.0, 1.0 / std::pow(sigmaGivenMap, 2), 0.0).asDiagonal();
+    p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDegree, 2), 0.0, 1.0 / std::pow(sigmaGivenMap, 2), 0.0).asDiagonal();
     p.mapSigma = mapSigma;
     graph.addPrior(size_t(k), p);
   }
@@ -407,9 +405,9 @@ TEST(PoseGraph, ACorrelatedMapErrorStillLetsThePriorsCorrectADrift) {
     o.mapErrorLength = length;
     PoseGraph graph(o);
     Matrix6d info = Matrix6d::Zero();
-    info.diagonal() << 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2), 1 / std::pow(0.05 * kDeg, 2),
+    info.diagonal() << 1 / std::pow(0.05 * kDegree, 2), 1 / std::pow(0.05 * kDegree, 2), 1 / std::pow(0.05 * kDegree, 2),
         1 / std::pow(0.02, 2), 1 / std::pow(0.02, 2), 1 / std::pow(0.02, 2);
-    const SE3 drifting = poseOf(2.0, 0, 0, 0.02 * kDeg);
+    const SE3 drifting = poseOf(2.0, 0, 0, 0.02 * kDegree);
     SE3 odometry = SE3::Identity();
     for (int k = 0; k < 51; ++k) {
       if (k > 0) odometry = odometry * drifting;
@@ -417,7 +415,7 @@ TEST(PoseGraph, ACorrelatedMapErrorStillLetsThePriorsCorrectADrift) {
       if (k > 0) graph.addOdometry(size_t(k) - 1, size_t(k), drifting, info);
       PosePrior p;
       p.pose = poseOf(2.0 * k, 0, 0, 0);
-      p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDeg, 2), 0.0, 1.0 / std::pow(0.05, 2), 0.0).asDiagonal();
+      p.information = Eigen::Vector4d(1.0 / std::pow(0.3 * kDegree, 2), 0.0, 1.0 / std::pow(0.05, 2), 0.0).asDiagonal();
       p.mapSigma = 0.2;
       graph.addPrior(size_t(k), p);
     }

@@ -394,7 +394,7 @@ Crafted threeInts() {
   return c;
 }
 
-std::string errorOf(const std::vector<uint8_t>& bytes) {
+std::string featherErrorOf(const std::vector<uint8_t>& bytes) {
   try {
     parseFeather(bytes, "crafted.feather");
   } catch (const Error& e) {
@@ -417,48 +417,48 @@ TEST(FeatherCrafted, ReadsAHandMadeFileWithEitherMessagePrefix) {
 TEST(FeatherCrafted, UnsupportedSchemasAreNamed) {
   Crafted c = threeInts();
   c.fields = {field("d", 7, fb::TableBuilder{}.scalar<int32_t>(0, 10).scalar<int32_t>(1, 2))};
-  EXPECT_EQ(errorOf(c.bytes()), "unsupported type Decimal128 in column 'd'");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "unsupported type Decimal128 in column 'd'");
   c.fields = {field("s", 13, fb::TableBuilder{})};
-  EXPECT_EQ(errorOf(c.bytes()), "unsupported type Struct in column 's'");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "unsupported type Struct in column 's'");
   c.fields = {field("b", 4, fb::TableBuilder{})};
-  EXPECT_EQ(errorOf(c.bytes()), "unsupported type Binary in column 'b'");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "unsupported type Binary in column 'b'");
   c.fields = {field("i", 2, fb::TableBuilder{}.scalar<int32_t>(0, 12))};
-  EXPECT_EQ(errorOf(c.bytes()), "unsupported Int bit width 12 in column 'i'");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "unsupported Int bit width 12 in column 'i'");
   c.fields = {int32Field("a").table(4, fb::TableBuilder{}.scalar<int64_t>(0, 0))};
-  EXPECT_EQ(errorOf(c.bytes()), "dictionary-encoded column 'a' is not supported");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "dictionary-encoded column 'a' is not supported");
   c.fields = {int32Field("a")};
   c.endianness = 1;
-  EXPECT_EQ(errorOf(c.bytes()), "big-endian Arrow data is not supported");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "big-endian Arrow data is not supported");
 }
 
 TEST(FeatherCrafted, MalformedBatchesAreRejected) {
   Crafted c = threeInts();
   c.buffers = {0, 0, 0, 1ll << 62};
-  EXPECT_NE(errorOf(c.bytes()).find("buffer 1 (offset 0, length 4611686018427387904) exceeds the body"),
+  EXPECT_NE(featherErrorOf(c.bytes()).find("buffer 1 (offset 0, length 4611686018427387904) exceeds the body"),
             std::string::npos);
   c = threeInts();
   c.buffers = {0, 0, 8, 8};  // the values buffer is too short for 3 rows
-  EXPECT_EQ(errorOf(c.bytes()), "record batch 0: column 'a' values has 8 bytes, needs 12");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "record batch 0: column 'a' values has 8 bytes, needs 12");
   c = threeInts();
   c.nodes = {4, 0};
-  EXPECT_EQ(errorOf(c.bytes()), "record batch 0: column 'a' length differs from the batch");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "record batch 0: column 'a' length differs from the batch");
   c = threeInts();
   c.nodes = {3, 1};  // a null count without a validity bitmap
-  EXPECT_EQ(errorOf(c.bytes()), "record batch 0: column 'a' validity has 0 bytes, needs 1");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "record batch 0: column 'a' validity has 0 bytes, needs 1");
   c = threeInts();
   c.nodes = {3, 1};
   c.body.insert(c.body.begin(), 8, 0);  // bitmap byte 0x00: three nulls, not one
   c.buffers = {0, 1, 8, 12};
-  EXPECT_EQ(errorOf(c.bytes()), "record batch 0: column 'a' validity bitmap disagrees with null count 1");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "record batch 0: column 'a' validity bitmap disagrees with null count 1");
   c = threeInts();
   c.buffers = {0, 0, 0, 12, 0, 0};
-  EXPECT_EQ(errorOf(c.bytes()), "record batch 0: 3 buffers, schema needs 2");
+  EXPECT_EQ(featherErrorOf(c.bytes()), "record batch 0: 3 buffers, schema needs 2");
   c = threeInts();
   c.rows = 1ll << 39;  // no allocation may follow from the row count alone
   c.nodes = {1ll << 39, 0};
-  EXPECT_NE(errorOf(c.bytes()).find("values has 12 bytes, needs 2199023255552"), std::string::npos);
+  EXPECT_NE(featherErrorOf(c.bytes()).find("values has 12 bytes, needs 2199023255552"), std::string::npos);
   c.rows = c.nodes[0] = 1ll << 62;
-  EXPECT_NE(errorOf(c.bytes()).find("implausible length"), std::string::npos);
+  EXPECT_NE(featherErrorOf(c.bytes()).find("implausible length"), std::string::npos);
 }
 
 TEST(FeatherCrafted, StringOffsetsAreChecked) {
@@ -477,9 +477,9 @@ TEST(FeatherCrafted, StringOffsetsAreChecked) {
   const Table ok = parseFeather(withOffsets(0, 1, 3), "ok");
   EXPECT_EQ(ok.column("s").stringAt(1), "bc");
   EXPECT_EQ(parseFeather(withOffsets(1, 1, 3), "rebased").column("s").stringAt(1), "bc");
-  EXPECT_EQ(errorOf(withOffsets(0, 2, 1)), "record batch 0: column 's' offsets decrease at row 1");
-  EXPECT_EQ(errorOf(withOffsets(-1, 2, 3)), "record batch 0: column 's' has a negative first offset");
-  EXPECT_EQ(errorOf(withOffsets(0, 1, 4)), "record batch 0: column 's' string data has 3 bytes, needs 4");
+  EXPECT_EQ(featherErrorOf(withOffsets(0, 2, 1)), "record batch 0: column 's' offsets decrease at row 1");
+  EXPECT_EQ(featherErrorOf(withOffsets(-1, 2, 3)), "record batch 0: column 's' has a negative first offset");
+  EXPECT_EQ(featherErrorOf(withOffsets(0, 1, 4)), "record batch 0: column 's' string data has 3 bytes, needs 4");
 }
 
 // A crafted batch whose single int32 buffer [1, 2, 3] is stored behind a compression prefix.
@@ -525,25 +525,25 @@ TEST(FeatherCrafted, CompressedBuffersMustDecompressToTheirDeclaredLength) {
     const std::vector<uint8_t> payload = compressedPayload(compression);
     EXPECT_EQ(parseFeather(compressedInts(codec, 12, payload).bytes(), "ok").column("a").as<int32_t>()[2], 3);
     // LZ4 finds out while decompressing; ZSTD frames carry their content size, so the bound catches it.
-    EXPECT_EQ(errorOf(compressedInts(codec, 16, payload).bytes()),
+    EXPECT_EQ(featherErrorOf(compressedInts(codec, 16, payload).bytes()),
               codec == 0 ? "record batch 0: column 'a' values: LZ4 frame decompressed to 12 bytes, header says 16"
                          : "record batch 0: column 'a' values: declared uncompressed length 16 exceeds the 12 bytes "
                            "its ZSTD frame can hold");
-    EXPECT_NE(errorOf(compressedInts(codec, 8, payload).bytes()).find("declared uncompressed length 8, needs 12"),
+    EXPECT_NE(featherErrorOf(compressedInts(codec, 8, payload).bytes()).find("declared uncompressed length 8, needs 12"),
               std::string::npos);
-    EXPECT_NE(errorOf(compressedInts(codec, 1ll << 50, payload).bytes()).find("can hold"),
+    EXPECT_NE(featherErrorOf(compressedInts(codec, 1ll << 50, payload).bytes()).find("can hold"),
               std::string::npos);
     std::vector<uint8_t> cut(payload.begin(), payload.end() - 3);
-    EXPECT_NE(errorOf(compressedInts(codec, 12, cut).bytes()), "no error");
+    EXPECT_NE(featherErrorOf(compressedInts(codec, 12, cut).bytes()), "no error");
     std::vector<uint8_t> garbage = payload;
     for (size_t i = 4; i < garbage.size(); ++i) garbage[i] ^= 0x5A;
-    EXPECT_NE(errorOf(compressedInts(codec, 12, garbage).bytes()), "no error");
+    EXPECT_NE(featherErrorOf(compressedInts(codec, 12, garbage).bytes()), "no error");
   }
   // -1: the data follows uncompressed.
   EXPECT_EQ(parseFeather(compressedInts(0, -1, threeIntBytes()).bytes(), "raw").column("a").as<int32_t>()[1], 2);
   Crafted shortPrefix = compressedInts(0, 12, {});
   shortPrefix.buffers = {0, 0, 0, 5};
-  EXPECT_NE(errorOf(shortPrefix.bytes()).find("shorter than its 8-byte length prefix"), std::string::npos);
+  EXPECT_NE(featherErrorOf(shortPrefix.bytes()).find("shorter than its 8-byte length prefix"), std::string::npos);
 }
 
 // --- corruption of real and written files ------------------------------------------------------
@@ -582,13 +582,13 @@ TEST(FeatherCorrupt, BadMagic) {
   std::vector<uint8_t> f = serializeFeather(syntheticTable());
   std::vector<uint8_t> bad = f;
   bad[0] = 'X';
-  EXPECT_EQ(errorOf(bad), "bad magic: not an Arrow IPC file");
-  EXPECT_EQ(errorOf({}), "bad magic: not an Arrow IPC file");
+  EXPECT_EQ(featherErrorOf(bad), "bad magic: not an Arrow IPC file");
+  EXPECT_EQ(featherErrorOf({}), "bad magic: not an Arrow IPC file");
   std::memcpy(bad.data(), "FEA1", 4);
-  EXPECT_NE(errorOf(bad).find("feather v1"), std::string::npos);
+  EXPECT_NE(featherErrorOf(bad).find("feather v1"), std::string::npos);
   bad = f;
   bad.back() = 'X';
-  EXPECT_EQ(errorOf(bad), "truncated: no ARROW1 magic at the end of the file");
+  EXPECT_EQ(featherErrorOf(bad), "truncated: no ARROW1 magic at the end of the file");
 }
 
 TEST(FeatherCorrupt, EveryTruncationThrows) {
@@ -616,7 +616,7 @@ TEST(FeatherCorrupt, FooterLengthFlips) {
   std::vector<uint8_t> huge = f;
   const int32_t big = 1 << 30;
   std::memcpy(huge.data() + at, &big, 4);
-  EXPECT_EQ(errorOf(huge), "truncated: footer length 1073741824 exceeds file size " + std::to_string(f.size()));
+  EXPECT_EQ(featherErrorOf(huge), "truncated: footer length 1073741824 exceeds file size " + std::to_string(f.size()));
 }
 
 TEST(FeatherCorrupt, EverySingleByteChangeIsHandled) {

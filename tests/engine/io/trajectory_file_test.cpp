@@ -7,6 +7,7 @@
 #include "engine/io/seconds_text.h"
 #include "engine/io/trajectory_file.h"
 #include "engine/io/tum_trajectory.h"
+#include "error_message.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -31,16 +32,7 @@ void expectSamePoses(const std::vector<SE3>& a, const std::vector<SE3>& b, doubl
   }
 }
 
-// The Error's message, or "" when parsing succeeded.
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 const std::vector<int64_t> kStamps = {315966265259836000, 315966265360032001, 315966265460032999};
 

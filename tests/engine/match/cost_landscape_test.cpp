@@ -1,12 +1,12 @@
 // The cost landscape on synthetic maps: its maximum at the matcher's result at an intersection,
 // a ridge along a corridor (and no ridge at the intersection), and its values are the NDT score.
+#include "engine/geom/angles.h"
 #include "engine/match/cost_landscape.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -22,8 +22,6 @@
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 HdMap intersection() { return test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)})); }
 HdMap corridor() { return test::matcherMap(test::mapOf({test::rectangle(-150, -5, 150, 5)})); }
@@ -64,7 +62,7 @@ TEST(CostLandscape, MaximumLiesAtTheMatchersResultAtAnIntersection) {
   MatchOptions mo;
   mo.timeBudgetMs = 1e6;
   MapMatcher matcher(map, mo);
-  const MatchResult r = matcher.match(points, offsetPose(truth, {1.0, -1.0, 2.0 * kDeg}));
+  const MatchResult r = matcher.match(points, offsetPose(truth, {1.0, -1.0, 2.0 * kDegree}));
   ASSERT_EQ(r.status, MatchStatus::Accepted) << r.reason;
   // Centred off the result, so the maximum is not at the centre by construction.
   const Eigen::Vector3d center = r.estimate + Eigen::Vector3d(0.83, -0.64, 0.0);
@@ -109,7 +107,7 @@ TEST(CostLandscape, ValuesAreTheNdtScoreAtEachOffset) {
   const auto score = [&](const Eigen::Vector3d& p) { return scoreNdt(finestGrid(map), points, p, o.score, NdtDerivatives::None).score; };
   EXPECT_DOUBLE_EQ(l.at(0, 4), score(pose + Eigen::Vector3d(1.0, -1.0, 0.0)));
   EXPECT_DOUBLE_EQ(l.at(3, 1), score(pose + Eigen::Vector3d(-0.5, 0.5, 0.0)));
-  EXPECT_DOUBLE_EQ(l.yawScores[0], score(pose + Eigen::Vector3d(0.0, 0.0, -2.0 * kDeg)));
+  EXPECT_DOUBLE_EQ(l.yawScores[0], score(pose + Eigen::Vector3d(0.0, 0.0, -2.0 * kDegree)));
   // Rows are written by index: the same for any thread count.
   CostLandscapeOptions fine = o;
   fine.step = 0.1;

@@ -1,6 +1,7 @@
 // The scan-to-map matcher on synthetic maps: convergence on a corridor and an
 // intersection, the covariance's null direction along a corridor (status degenerate),
 // rejection of poor or inconsistent matches, and option checks.
+#include "engine/geom/angles.h"
 #include "engine/match/map_matcher.h"
 
 #include <gtest/gtest.h>
@@ -23,8 +24,6 @@
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 using test::ringRoadPoints;
 
 TEST(MapMatcher, CorridorFixesLateralAndYawAndReportsTheAlongDirectionUnobservable) {
@@ -34,10 +33,10 @@ TEST(MapMatcher, CorridorFixesLateralAndYawAndReportsTheAlongDirectionUnobservab
   MapMatcher matcher(map, {});
   for (double lateral : {-1.5, 0.0, 1.5}) {
     for (double yawDeg : {-3.0, 3.0}) {
-      const MatchResult r = matcher.match(points, offsetPose(truth, {0.5, lateral, yawDeg * kDeg}));
+      const MatchResult r = matcher.match(points, offsetPose(truth, {0.5, lateral, yawDeg * kDegree}));
       const Eigen::Vector3d e = planarError(truth, r.estimate);
       EXPECT_LT(std::abs(e.y()), 0.10) << lateral << " " << yawDeg;
-      EXPECT_LT(std::abs(e.z()), 0.3 * kDeg) << lateral << " " << yawDeg;
+      EXPECT_LT(std::abs(e.z()), 0.3 * kDegree) << lateral << " " << yawDeg;
       EXPECT_EQ(r.status, MatchStatus::Degenerate) << r.reason;
       EXPECT_EQ(r.observableDirections, 2);
       // The dropped direction is the corridor's axis (city x): no information along it.
@@ -63,12 +62,12 @@ TEST(MapMatcher, IntersectionConvergesInAllThreeDirections) {
   for (double along : {-1.0, 1.0}) {
     for (double lateral : {-1.5, 0.0, 1.5}) {
       for (double yawDeg : {-3.0, 3.0}) {
-        const MatchResult r = matcher.match(points, offsetPose(truth, {along, lateral, yawDeg * kDeg}));
+        const MatchResult r = matcher.match(points, offsetPose(truth, {along, lateral, yawDeg * kDegree}));
         const Eigen::Vector3d e = planarError(truth, r.estimate);
         ++starts;
         // Ring-sampled points bias NDT on a filled area by ~0.1 m (points on arcs are pulled
         // towards cell means): measured 0.11-0.14 m along, < 0.05 m lateral, < 0.05 deg.
-        const bool ok = e.head<2>().norm() < 0.20 && std::abs(e.z()) < 0.3 * kDeg;
+        const bool ok = e.head<2>().norm() < 0.20 && std::abs(e.z()) < 0.3 * kDegree;
         converged += ok;
         EXPECT_TRUE(ok) << "start " << along << " " << lateral << " " << yawDeg << ": error " << e.transpose();
         EXPECT_EQ(r.status, MatchStatus::Accepted) << r.reason << " " << r.timeMs << " ms";
@@ -124,7 +123,7 @@ TEST(MapMatcher, RecordsTheIterationPathFromStartToEstimate) {
   const HdMap map = test::matcherMap(test::mapOf({test::rectangle(-100, -5, 100, 5), test::rectangle(-6, -100, 6, 100)}));
   const Eigen::Vector3d truth(2.0, -1.0, 0.3);
   const std::vector<Eigen::Vector2d> points = ringRoadPoints(map.drivable(), truth);
-  const Eigen::Vector3d start = offsetPose(truth, {1.0, -1.5, 3.0 * kDeg});
+  const Eigen::Vector3d start = offsetPose(truth, {1.0, -1.5, 3.0 * kDegree});
   MatchOptions o;
   o.timeBudgetMs = 1e6;
   MapMatcher matcher(map, o);
@@ -189,7 +188,7 @@ TEST(MapMatcher, PclBackendRunsOnTheSamePoints) {
   // From the truth it must stay there (it is PCL's optimum too) and be judged like ndt2d.
   const Eigen::Vector3d e = planarError(truth, r.estimate);
   EXPECT_LT(e.head<2>().norm(), 0.2);
-  EXPECT_LT(std::abs(e.z()), 0.5 * kDeg);
+  EXPECT_LT(std::abs(e.z()), 0.5 * kDegree);
   EXPECT_EQ(r.status, MatchStatus::Accepted) << r.reason;
 }
 
@@ -220,15 +219,15 @@ TEST(MapMatcher, CurbsCorrectTheOcclusionBiasOfTheRegionNdt) {
   }
   for (double x = -25.0; x <= 25.0; x += 0.5) curb.emplace_back(x, -4.99);  // at the curb face
   MapMatcher matcher(map, {});
-  const Eigen::Vector3d start = offsetPose(truth, {0.3, 0.4, 1.0 * kDeg});
+  const Eigen::Vector3d start = offsetPose(truth, {0.3, 0.4, 1.0 * kDegree});
   const Eigen::Vector3d biased = planarError(truth, matcher.match(points, start).estimate);  // without curbs: NDT alone
   const MatchResult r = matcher.match(points, start, curb);
   const Eigen::Vector3d e = planarError(truth, r.estimate);
   std::printf("lateral error: region NDT %.3f m, with curbs %.4f m; yaw %.3f / %.4f deg\n", biased.y(), e.y(),
-              biased.z() / kDeg, e.z() / kDeg);
+              biased.z() / kDegree, e.z() / kDegree);
   EXPECT_GT(std::abs(biased.y()), 0.1);
   EXPECT_LT(std::abs(e.y()), 0.03);
-  EXPECT_LT(std::abs(e.z()), 0.05 * kDeg);
+  EXPECT_LT(std::abs(e.z()), 0.05 * kDegree);
   EXPECT_NEAR(e.x(), biased.x(), 1e-3);  // curbs never move the estimate along the road
 }
 

@@ -1,12 +1,12 @@
 // Honest match uncertainty: how far the road points let the pose move (plausibleHalfWidths), and the
 // information widened to it (widenToEvidence), on synthetic maps.
+#include "engine/geom/angles.h"
 #include "engine/match/match_uncertainty.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include <Eigen/LU>
 
@@ -20,8 +20,6 @@
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 // A 10 m corridor seen kerb to kerb: the points pin the lateral place and yaw to a few decimetres
 // and tenths of a degree, and leave the place along the corridor unbounded.
 TEST(MatchUncertainty, AFullySeenCorridorBoundsLateralAndYawButNotAlong) {
@@ -32,7 +30,7 @@ TEST(MatchUncertainty, AFullySeenCorridorBoundsLateralAndYawButNotAlong) {
   EXPECT_TRUE(std::isinf(w.x())) << w.transpose();
   EXPECT_LT(w.y(), 0.4);
   EXPECT_GT(w.y(), 0.05);
-  EXPECT_LT(w.z(), 1.5 * kDeg);
+  EXPECT_LT(w.z(), 1.5 * kDegree);
 }
 
 // Road points on a 4 m strip down the middle of a 40 m wide road (what the lidar labels road on a
@@ -51,7 +49,7 @@ TEST(MatchUncertainty, ANarrowStripInAWideRoadIsReportedUnobservable) {
   MatchOptions o;
   o.timeBudgetMs = 1e6;
   MapMatcher matcher(map, o);
-  const MatchResult r = matcher.match(strip, offsetPose(truth, {0.0, 1.0, 1.0 * kDeg}));
+  const MatchResult r = matcher.match(strip, offsetPose(truth, {0.0, 1.0, 1.0 * kDegree}));
   EXPECT_EQ(r.status, MatchStatus::Rejected) << r.reason;
   EXPECT_EQ(r.observableDirections, 0);
   EXPECT_TRUE(r.information.isZero());
@@ -72,7 +70,7 @@ TEST(MatchUncertainty, OneSidedRoadPointsNeedTheCurbToBoundTheLateralPlace) {
   EXPECT_TRUE(std::isinf(roadOnly.y())) << roadOnly.transpose();
   const Eigen::Vector3d withCurbs = plausibleHalfWidths(map.boundaryDistance(), strip, curbs, truth, MatchOptions{});
   EXPECT_LT(withCurbs.y(), 0.6) << withCurbs.transpose();
-  EXPECT_LT(withCurbs.z(), 1.5 * kDeg);
+  EXPECT_LT(withCurbs.z(), 1.5 * kDegree);
   EXPECT_TRUE(std::isinf(withCurbs.x()));
 }
 
@@ -88,19 +86,19 @@ TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCa
   r.estimate = {5.0, 7.0, 0.5};
   // Laplace: along 0.02 m, lateral 0.03 m, yaw 0.05 deg in the estimate's frame.
   Eigen::Matrix3d local = Eigen::Matrix3d::Zero();
-  const double sy = 0.05 * kDeg;
+  const double sy = 0.05 * kDegree;
   local.diagonal() << 0.02 * 0.02, 0.03 * 0.03, sy * sy;
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
   R.topLeftCorner<2, 2>() << std::cos(0.5), -std::sin(0.5), std::sin(0.5), std::cos(0.5);
   r.covariance = R * local * R.transpose();
   r.information = r.covariance.inverse();
-  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDeg), o, r);
+  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDegree), o, r);
   EXPECT_EQ(r.status, MatchStatus::Accepted);
   EXPECT_EQ(r.observableDirections, 3);
   const Eigen::Matrix3d c = R.transpose() * r.covariance * R;
   EXPECT_NEAR(std::sqrt(c(0, 0)), std::hypot(0.02, 0.1), 1e-9);   // Laplace beats the evidence, plus map
   EXPECT_NEAR(std::sqrt(c(1, 1)), std::hypot(0.2, 0.1), 1e-9);    // evidence 0.4 / 2, plus map
-  EXPECT_NEAR(std::sqrt(c(2, 2)), 0.2 * kDeg, 1e-12);
+  EXPECT_NEAR(std::sqrt(c(2, 2)), 0.2 * kDegree, 1e-12);
   EXPECT_NEAR(c(1, 2), 0.0, 1e-15);
   EXPECT_TRUE((r.information * r.covariance).isApprox(Eigen::Matrix3d::Identity(), 1e-6));
 
@@ -108,7 +106,7 @@ TEST(MatchUncertainty, WideningRaisesSigmasToTheEvidenceAndDropsWhatExceedsTheCa
   r.status = MatchStatus::Accepted;
   r.covariance = R * local * R.transpose();
   r.information = r.covariance.inverse();
-  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDeg), o, r);
+  widenToEvidence(Eigen::Vector3d(0.01, 0.4, 0.4 * kDegree), o, r);
   EXPECT_EQ(r.status, MatchStatus::Degenerate);
   EXPECT_EQ(r.observableDirections, 2);
   const Eigen::Vector3d lateral(-std::sin(0.5), std::cos(0.5), 0.0);

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <numbers>
 
 #include "engine/eval/match_calibration.h"
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
@@ -19,8 +19,6 @@
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 using Keep = std::function<bool(const Eigen::Vector2d&)>;
 
@@ -49,9 +47,9 @@ CaseOutcome runCase(const HdMap& map, const ArgoverseLog& log, size_t sweepIndex
   for (double along : {-1.0, 0.0, 1.0}) {
     for (double lateral : {-1.5, -0.75, 0.0, 0.75, 1.5}) {
       for (double yawDeg : {-3.0, 0.0, 3.0}) {
-        const MatchResult r = matcher.match(road, offsetPose(truth, {along, lateral, yawDeg * kDeg}), curb);
+        const MatchResult r = matcher.match(road, offsetPose(truth, {along, lateral, yawDeg * kDegree}), curb);
         const MatchErrorSample s = matchErrorSample(truth, r.estimate, r.information);
-        const bool accurate = std::abs(s.error(1)) < 0.25 && std::abs(s.error(2)) < 0.5 * kDeg;
+        const bool accurate = std::abs(s.error(1)) < 0.25 && std::abs(s.error(2)) < 0.5 * kDegree;
         const bool covered = !(std::abs(s.error(1)) > 3.0 * s.sigma(1)) && !(std::abs(s.error(2)) > 3.0 * s.sigma(2));
         const bool rejected = r.status == MatchStatus::Rejected;
         ++c.starts;
@@ -60,11 +58,11 @@ CaseOutcome runCase(const HdMap& map, const ArgoverseLog& log, size_t sweepIndex
         c.honest += accurate || rejected || covered;
         if (!rejected) {
           maxLateral = std::max(maxLateral, std::abs(s.error(1)));
-          maxYaw = std::max(maxYaw, std::abs(s.error(2)) / kDeg);
+          maxYaw = std::max(maxYaw, std::abs(s.error(2)) / kDegree);
         }
         if (!(accurate || rejected || covered)) {
           std::printf("  %s sweep %zu start (%+.1f %+.2f %+.0f deg): error lateral %+.3f yaw %+.3f deg, sigma %.3f m %.3f deg, %s\n",
-                      name, sweepIndex, along, lateral, yawDeg, s.error(1), s.error(2) / kDeg, s.sigma(1), s.sigma(2) / kDeg,
+                      name, sweepIndex, along, lateral, yawDeg, s.error(1), s.error(2) / kDegree, s.sigma(1), s.sigma(2) / kDegree,
                       toString(r.status));
         }
       }
@@ -85,7 +83,7 @@ TEST(RealHardCases, EveryCaseIsAccurateOrHonestFromNinetyFivePercentOfStarts) {
       {"left kerb hidden (y > 2 m removed)", [](const Eigen::Vector2d& p) { return p.y() <= 2.0; }},
       {"right kerb hidden (y < -2 m removed)", [](const Eigen::Vector2d& p) { return p.y() >= -2.0; }},
       {"points beyond 20 m removed", [](const Eigen::Vector2d& p) { return p.norm() <= 20.0; }},
-      {"90 deg sector ahead", [](const Eigen::Vector2d& p) { return std::abs(std::atan2(p.y(), p.x())) <= 45.0 * kDeg; }},
+      {"90 deg sector ahead", [](const Eigen::Vector2d& p) { return std::abs(std::atan2(p.y(), p.x())) <= 45.0 * kDegree; }},
   };
   for (const auto& [name, keep] : cases) {
     for (size_t s = 0; s < 2; ++s) {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/sweep_road_points.h"
@@ -15,8 +15,6 @@
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct GridOutcome {
   int starts = 0, converged = 0;
@@ -40,20 +38,20 @@ GridOutcome runGrid(MatchBackend backend, size_t sweepIndex, bool print) {
   for (double along : {-1.0, 0.0, 1.0}) {
     for (double lateral : {-1.5, -0.75, 0.0, 0.75, 1.5}) {
       for (double yawDeg : {-3.0, 0.0, 3.0}) {
-        const Eigen::Vector3d start = offsetPose(truth, {along, lateral, yawDeg * kDeg});
+        const Eigen::Vector3d start = offsetPose(truth, {along, lateral, yawDeg * kDegree});
         const MatchResult r = matcher.match(points.road, start, points.curb);
         const Eigen::Vector3d e = planarError(truth, r.estimate);
-        const bool ok = std::abs(e.y()) < 0.25 && std::abs(e.z()) < 0.5 * kDeg;
+        const bool ok = std::abs(e.y()) < 0.25 && std::abs(e.z()) < 0.5 * kDegree;
         ++g.starts;
         g.converged += ok;
         g.maxAlong = std::max(g.maxAlong, std::abs(e.x()));
         g.sumAlong += std::abs(e.x());
         g.maxLateral = std::max(g.maxLateral, std::abs(e.y()));
-        g.maxYawDeg = std::max(g.maxYawDeg, std::abs(e.z()) / kDeg);
+        g.maxYawDeg = std::max(g.maxYawDeg, std::abs(e.z()) / kDegree);
         if (print) {
           std::printf("start (%+.2f %+.2f %+.1f deg) -> error along %+.3f lateral %+.3f yaw %+.3f deg, %s %s, iters %d, "
                       "%.2f ms, inliers %.2f, score/pt %.3f, eig %.1f %.1f %.1f\n",
-                      along, lateral, yawDeg, e.x(), e.y(), e.z() / kDeg, toString(r.status), r.reason.c_str(),
+                      along, lateral, yawDeg, e.x(), e.y(), e.z() / kDegree, toString(r.status), r.reason.c_str(),
                       r.iterations, r.timeMs, r.inlierRatio, r.scorePerPoint, r.eigenvalues(0), r.eigenvalues(1),
                       r.eigenvalues(2));
         }

@@ -10,14 +10,13 @@
 #include "matcher_map.h"
 #include "ring_road_points.h"
 #include "engine/eval/match_calibration.h"
+#include "engine/geom/angles.h"
 #include "engine/geom/se2.h"
 #include "engine/map/hd_map.h"
 #include "engine/match/map_matcher.h"
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 TEST(StaleRegions, AreasMissingFromTheMapAreLeftOutAndTheRestStillMatches) {
   // The world: a corridor with a drivable lot on each side (3-4 m of kerb and sidewalk between);
@@ -46,7 +45,7 @@ TEST(StaleRegions, AreasMissingFromTheMapAreLeftOutAndTheRestStillMatches) {
   EXPECT_GT(regional.staleRegionPoints, points.size() / 2);
   const MatchErrorSample e = matchErrorSample(truth, regional.estimate, regional.information);
   EXPECT_LT(std::abs(e.error(1)), 0.1);
-  EXPECT_LT(std::abs(e.error(2)), 0.3 * kDeg);
+  EXPECT_LT(std::abs(e.error(2)), 0.3 * kDegree);
   EXPECT_TRUE(std::isinf(e.sigma(0)));  // along the corridor: unobservable
   EXPECT_LT(e.sigma(1), 0.3);
 }

@@ -1,17 +1,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "engine/error.h"
+#include "engine/geom/angles.h"
 #include "engine/odom/degraded_trajectory.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/odom/odometry.h"
+#include "error_message.h"
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 SE3 pose(const Eigen::Vector3d& axis, double angle, const Eigen::Vector3d& t) {
   return makeSE3(Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis.normalized())), t);
@@ -23,14 +22,7 @@ GivenOdometry given(std::vector<int64_t> stamps, std::vector<SE3> poses, GivenOd
   return {PoseTrajectory(std::move(stamps), std::move(poses), "given.tum"), frame, "given.tum", TrajectoryFormat::Tum};
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 LidarSweep sweepAt(int64_t t) {
   LidarSweep s;
@@ -45,16 +37,16 @@ LidarSweep sweepAt(int64_t t) {
 // a quarter of the way: a quarter of the angle.
 TEST(GivenOdometry, InterpolatesOnSE3BetweenTheFilesPoses) {
   const Eigen::Vector3d axis(0.2, -0.5, 1.0);
-  const SE3 a = pose(axis, 0.1, {10, 20, 1}), b = pose(axis, 0.1 + 60 * kDeg, {14, 26, 3});
+  const SE3 a = pose(axis, 0.1, {10, 20, 1}), b = pose(axis, 0.1 + 60 * kDegree, {14, 26, 3});
   const GivenOdometry g = given({1000, 3000}, {a, b}, GivenOdometryFrame::City);
   const PoseTrajectory at = givenOdometryAtSweeps(g, {1000, 1500, 2000, 3000}, SE3::Identity());
   const SE3 mid = at.poses()[2], quarter = at.poses()[1];
   EXPECT_LT((mid.translation() - Eigen::Vector3d(12, 23, 2)).norm(), 1e-12);
-  EXPECT_NEAR(angleBetween(a, mid), 30 * kDeg, 1e-12);
-  EXPECT_NEAR(angleBetween(mid, b), 30 * kDeg, 1e-12);
+  EXPECT_NEAR(angleBetween(a, mid), 30 * kDegree, 1e-12);
+  EXPECT_NEAR(angleBetween(mid, b), 30 * kDegree, 1e-12);
   EXPECT_LT((Eigen::AngleAxisd(a.rotation().transpose() * mid.rotation()).axis() - axis.normalized()).norm(), 1e-9);
   EXPECT_LT((quarter.translation() - Eigen::Vector3d(11, 21.5, 1.5)).norm(), 1e-12);
-  EXPECT_NEAR(angleBetween(a, quarter), 15 * kDeg, 1e-12);
+  EXPECT_NEAR(angleBetween(a, quarter), 15 * kDegree, 1e-12);
   EXPECT_TRUE(at.poses()[0].isApprox(a, 1e-12));
   EXPECT_TRUE(at.poses()[3].isApprox(b, 1e-12));
 }

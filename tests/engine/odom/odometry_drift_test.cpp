@@ -1,29 +1,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "engine/error.h"
 #include "engine/eval/trajectory_errors.h"
+#include "engine/geom/angles.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/odom/odometry.h"
 #include "engine/odom/odometry_drift.h"
 #include "engine/sim/log_writer.h"
+#include "error_message.h"
 #include "test_data.h"
 
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-std::string errorOf(const std::string& text) {
-  try {
-    parseOdometryDrift(text, "option --odometry-drift");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+// The message parsing `text` as --odometry-drift fails with, or "" when it is accepted.
+std::string driftErrorOf(const std::string& text) { return test::errorOf([&] { parseOdometryDrift(text, "option --odometry-drift"); }); }
 
 SE3 planar(double x, double y, double yaw) {
   SE3 T = SE3::Identity();
@@ -62,18 +55,18 @@ TEST(OdometryDrift, ParsesScaleYawAndOptionalPitch) {
 }
 
 TEST(OdometryDrift, BadValuesAreOneLineErrorsNamingTheOption) {
-  EXPECT_EQ(errorOf("0.2,0"), "option --odometry-drift: scale = 0.2 is out of range (-0.2, 0.2)");
-  EXPECT_EQ(errorOf("-0.25,0"), "option --odometry-drift: scale = -0.25 is out of range (-0.2, 0.2)");
-  EXPECT_EQ(errorOf("0.007,20.5"), "option --odometry-drift: yaw_deg_per_100m = 20.5 is out of range [-20, 20]");
-  EXPECT_EQ(errorOf("0.007,0.5,-21"), "option --odometry-drift: pitch_deg_per_100m = -21 is out of range [-20, 20]");
+  EXPECT_EQ(driftErrorOf("0.2,0"), "option --odometry-drift: scale = 0.2 is out of range (-0.2, 0.2)");
+  EXPECT_EQ(driftErrorOf("-0.25,0"), "option --odometry-drift: scale = -0.25 is out of range (-0.2, 0.2)");
+  EXPECT_EQ(driftErrorOf("0.007,20.5"), "option --odometry-drift: yaw_deg_per_100m = 20.5 is out of range [-20, 20]");
+  EXPECT_EQ(driftErrorOf("0.007,0.5,-21"), "option --odometry-drift: pitch_deg_per_100m = -21 is out of range [-20, 20]");
   for (const char* bad : {"", "0.007", "0.007,0.5,0,1", "0.007,,0.5"}) {
-    EXPECT_EQ(errorOf(bad).rfind("option --odometry-drift: ", 0), 0u) << bad;
-    EXPECT_NE(errorOf(bad).find("SCALE,YAW_DEG_PER_100M"), std::string::npos) << bad;
+    EXPECT_EQ(driftErrorOf(bad).rfind("option --odometry-drift: ", 0), 0u) << bad;
+    EXPECT_NE(driftErrorOf(bad).find("SCALE,YAW_DEG_PER_100M"), std::string::npos) << bad;
   }
   for (const char* bad : {"abc,0.5", "0.007,0.5x", "nan,0", "0.007,inf", "1e400,0"}) {
-    EXPECT_NE(errorOf(bad).find("is not a number"), std::string::npos) << bad << ": " << errorOf(bad);
+    EXPECT_NE(driftErrorOf(bad).find("is not a number"), std::string::npos) << bad << ": " << driftErrorOf(bad);
   }
-  for (const char* bad : {"", "abc,0.5", "0.3,0"}) EXPECT_EQ(errorOf(bad).find('\n'), std::string::npos) << bad;
+  for (const char* bad : {"", "abc,0.5", "0.3,0"}) EXPECT_EQ(driftErrorOf(bad).find('\n'), std::string::npos) << bad;
   EXPECT_EQ(odometryDriftProblem({}), "");
   EXPECT_NE(odometryDriftProblem({std::nan(""), 0, 0}), "");
 }
@@ -98,16 +91,16 @@ TEST(OdometryDrift, StraightTrajectoryEndPointIsAnalytic) {
 
   const OdometryDrift drift{0.007, 0.5, 0.0};
   const std::vector<SE3> drifted = driftedPoses(truth, drift);
-  const double beta = 0.5 / 100.0 * step * kDeg;  // per step
+  const double beta = 0.5 / 100.0 * step * kDegree;  // per step
   const Eigen::Vector3d expected = 1.007 * rotatedSum({step, 0, 0}, beta, n);
   EXPECT_NEAR((drifted.back().translation() - expected).norm(), 0.0, 1e-9);
   EXPECT_NEAR(Eigen::AngleAxisd(drifted.back().rotation()).angle(), n * beta, 1e-12);  // 1 deg over 200 m
   // Small-angle check of the closed form: lateral = k L^2 / 2 (1.007 for the scale).
-  EXPECT_NEAR(drifted.back().translation().y(), 1.007 * 0.5 / 100.0 * kDeg * length * (length - step) / 2.0, 1e-4);
+  EXPECT_NEAR(drifted.back().translation().y(), 1.007 * 0.5 / 100.0 * kDegree * length * (length - step) / 2.0, 1e-4);
 
   // Pitch tips the nose down: the drive descends by the same sum about y.
   const std::vector<SE3> pitched = driftedPoses(truth, {0.0, 0.0, 2.0});
-  const double b = 2.0 / 100.0 * step * kDeg;
+  const double b = 2.0 / 100.0 * step * kDegree;
   EXPECT_NEAR(pitched.back().translation().z(), -std::sin(n * b / 2) / std::sin(b / 2) * step * std::sin((n - 1) * b / 2), 1e-9);
   EXPECT_NEAR(pitched.back().translation().x(), std::sin(n * b / 2) / std::sin(b / 2) * step * std::cos((n - 1) * b / 2), 1e-9);
 }
@@ -121,7 +114,7 @@ TEST(OdometryDrift, CurvedTrajectoryEndPointIsAnalytic) {
   const std::vector<SE3> truth = repeated(planar(chord.x(), chord.y(), phi), n);
   for (const OdometryDrift& d : {OdometryDrift{0.007, 0.5, 0.0}, OdometryDrift{-0.01, -3.0, 0.0}}) {
     const std::vector<SE3> drifted = driftedPoses(truth, d);
-    const double beta = phi + d.yawDegPer100m / 100.0 * chord.norm() * kDeg;
+    const double beta = phi + d.yawDegPer100m / 100.0 * chord.norm() * kDegree;
     const Eigen::Vector3d expected = (1.0 + d.scale) * rotatedSum(chord, beta, n);
     EXPECT_NEAR((drifted.back().translation() - expected).norm(), 0.0, 1e-9) << d.scale;
     const Eigen::Matrix3d heading = Eigen::AngleAxisd(n * beta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -150,7 +143,7 @@ TEST(OdometryDrift, RelativePoseErrorOfAStraightDriveShowsTheDrift) {
   EXPECT_NEAR(scaleOnly.rpe100.yawDegPer100m, 0.0, 1e-9);
 
   const TrajectoryEvaluation e = evaluate({0.007, 0.5, 0.0});
-  const double lateralPercent = 0.5 / 100.0 * kDeg * 100.0 / 2.0 * 100.0;  // k L / 2 over L = 100 m, in %
+  const double lateralPercent = 0.5 / 100.0 * kDegree * 100.0 / 2.0 * 100.0;  // k L / 2 over L = 100 m, in %
   EXPECT_NEAR(lateralPercent, 0.436, 1e-3);
   EXPECT_NEAR(e.rpe100.translationPercent, std::hypot(0.7, lateralPercent), 0.005);
   EXPECT_NEAR(e.rpe100.yawDegPer100m, 0.5, 1e-6);

@@ -3,6 +3,7 @@
 #include "engine/error.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/config_schema.h"
+#include "error_message.h"
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -10,14 +11,8 @@
 namespace hdprior {
 namespace {
 
-std::string errorOf(const std::string& text) {
-  try {
-    parseConfig(text, "my.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+// The message parsing `text` as my.json fails with, or "" when it is accepted.
+std::string configErrorOf(const std::string& text) { return test::errorOf([&] { parseConfig(text, "my.json"); }); }
 
 }  // namespace
 
@@ -64,36 +59,36 @@ TEST(Config, OneEgoHeightSetsTheRoadLevel) {
   EXPECT_DOUBLE_EQ(c.prior.egoHeight, 1.73);
   EXPECT_DOUBLE_EQ(c.roadPoints.ground.groundZ, -1.73);
   EXPECT_DOUBLE_EQ(c.roadPoints.road.groundZ, -1.73);
-  EXPECT_EQ(errorOf(R"({"road_points": {"ground": {"ground_z": -1.73}}})"), "my.json: unknown key road_points.ground.ground_z");
-  EXPECT_EQ(errorOf(R"({"prior": {"ego_height": 1.73}})"), "my.json: unknown key prior.ego_height");
+  EXPECT_EQ(configErrorOf(R"({"road_points": {"ground": {"ground_z": -1.73}}})"), "my.json: unknown key road_points.ground.ground_z");
+  EXPECT_EQ(configErrorOf(R"({"prior": {"ego_height": 1.73}})"), "my.json: unknown key prior.ego_height");
 }
 
 TEST(Config, UnknownKeysAndBadValuesNameFileAndKey) {
-  EXPECT_EQ(errorOf(R"({"odometry": {"features": {"plane_curvatur": 0.05}}})"), "my.json: unknown key odometry.features.plane_curvatur");
-  EXPECT_EQ(errorOf(R"({"odometr": {}})"), "my.json: unknown key odometr");
-  EXPECT_EQ(errorOf(R"({"keyframes": {"distance": -1}})"), "my.json: keyframes.distance = -1 is out of range [0, 100000]");
-  EXPECT_NE(errorOf(R"({"odometry": {"local_map": {"max_points_per_voxel": 2.5}}})").find("odometry.local_map.max_points_per_voxel is not an integer"), std::string::npos);
-  EXPECT_EQ(errorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})"), "my.json: odometry.deskew.mode must be one of none, constant_velocity");
-  EXPECT_NE(errorOf(R"({"match": 3})").find("match must be a JSON object"), std::string::npos);
-  EXPECT_EQ(errorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be one of ndt2d, pcl");
-  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.5, 100]");
-  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": []}})"), "my.json: match.cell_sizes must be a non-empty array of numbers");
-  EXPECT_EQ(errorOf(R"({"match": {"cell_sizes": [1.0, 2.0]}})"), "my.json: match.cell_sizes must go from coarse to fine (decreasing)");
-  EXPECT_EQ(errorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
-  EXPECT_EQ(errorOf(R"({"odometry": {"features": {"min_range": 50, "max_range": 40}}})"),
+  EXPECT_EQ(configErrorOf(R"({"odometry": {"features": {"plane_curvatur": 0.05}}})"), "my.json: unknown key odometry.features.plane_curvatur");
+  EXPECT_EQ(configErrorOf(R"({"odometr": {}})"), "my.json: unknown key odometr");
+  EXPECT_EQ(configErrorOf(R"({"keyframes": {"distance": -1}})"), "my.json: keyframes.distance = -1 is out of range [0, 100000]");
+  EXPECT_NE(configErrorOf(R"({"odometry": {"local_map": {"max_points_per_voxel": 2.5}}})").find("odometry.local_map.max_points_per_voxel is not an integer"), std::string::npos);
+  EXPECT_EQ(configErrorOf(R"({"odometry": {"deskew": {"mode": "magic"}}})"), "my.json: odometry.deskew.mode must be one of none, constant_velocity");
+  EXPECT_NE(configErrorOf(R"({"match": 3})").find("match must be a JSON object"), std::string::npos);
+  EXPECT_EQ(configErrorOf(R"({"match": {"backend": "icp"}})"), "my.json: match.backend must be one of ndt2d, pcl");
+  EXPECT_EQ(configErrorOf(R"({"match": {"cell_sizes": [1.0, 0.0]}})"), "my.json: match.cell_sizes = 0.0 is out of range [0.5, 100]");
+  EXPECT_EQ(configErrorOf(R"({"match": {"cell_sizes": []}})"), "my.json: match.cell_sizes must be a non-empty array of numbers");
+  EXPECT_EQ(configErrorOf(R"({"match": {"cell_sizes": [1.0, 2.0]}})"), "my.json: match.cell_sizes must go from coarse to fine (decreasing)");
+  EXPECT_EQ(configErrorOf(R"({"match": {"prediction_sigma": [1, 1]}})"), "my.json: match.prediction_sigma must be an array of 3 numbers");
+  EXPECT_EQ(configErrorOf(R"({"odometry": {"features": {"min_range": 50, "max_range": 40}}})"),
             "my.json: odometry.features.min_range must be below odometry.features.max_range");
-  EXPECT_EQ(errorOf(R"({"graph": {"unknown": 1}})"), "my.json: unknown key graph.unknown");
-  EXPECT_NE(errorOf("{").find("invalid JSON"), std::string::npos);
+  EXPECT_EQ(configErrorOf(R"({"graph": {"unknown": 1}})"), "my.json: unknown key graph.unknown");
+  EXPECT_NE(configErrorOf("{").find("invalid JSON"), std::string::npos);
 }
 
 // The values the engine's stages refuse are refused when the file is read, naming the file and the key.
 TEST(Config, ValuesTheStagesRefuseAreRefusedWhenRead) {
-  EXPECT_EQ(errorOf(R"({"match": {"min_points": 0}})"), "my.json: match.min_points = 0 is out of range [1, 10000000]");
-  EXPECT_EQ(errorOf(R"({"match": {"gate_chi2": 0}})"), "my.json: match.gate_chi2 = 0 is out of range (0, 1000000000]");
-  EXPECT_EQ(errorOf(R"({"match": {"degenerate_ratio": 1}})"), "my.json: match.degenerate_ratio = 1 is out of range [0, 1)");
-  EXPECT_EQ(errorOf(R"({"match": {"boundary_band": 0}})"), "my.json: match.boundary_band = 0 is out of range (0, 100]");
-  EXPECT_EQ(errorOf(R"({"match": {"stale_distance": 0}})"), "my.json: match.stale_distance = 0 is out of range (0, 1000]");
-  EXPECT_EQ(errorOf(R"({"graph": {"prior_huber": 0}})"), "my.json: graph.prior_huber = 0 is out of range (0, 1000000]");
+  EXPECT_EQ(configErrorOf(R"({"match": {"min_points": 0}})"), "my.json: match.min_points = 0 is out of range [1, 10000000]");
+  EXPECT_EQ(configErrorOf(R"({"match": {"gate_chi2": 0}})"), "my.json: match.gate_chi2 = 0 is out of range (0, 1000000000]");
+  EXPECT_EQ(configErrorOf(R"({"match": {"degenerate_ratio": 1}})"), "my.json: match.degenerate_ratio = 1 is out of range [0, 1)");
+  EXPECT_EQ(configErrorOf(R"({"match": {"boundary_band": 0}})"), "my.json: match.boundary_band = 0 is out of range (0, 100]");
+  EXPECT_EQ(configErrorOf(R"({"match": {"stale_distance": 0}})"), "my.json: match.stale_distance = 0 is out of range (0, 1000]");
+  EXPECT_EQ(configErrorOf(R"({"graph": {"prior_huber": 0}})"), "my.json: graph.prior_huber = 0 is out of range (0, 1000000]");
 }
 
 // Every key rejects a value just beyond each end of its range, and a value of the wrong type, with
@@ -107,14 +102,14 @@ TEST(Config, EveryKeyRejectsValuesBeyondItsRangeNamingFileAndKey) {
       file[nlohmann::json::json_pointer(pointer)] = value;
       return file.dump();
     };
-    EXPECT_NE(errorOf(fileWith(nlohmann::json::object({{"x", 1}}))).find("my.json: " + k.key), std::string::npos) << k.key;
+    EXPECT_NE(configErrorOf(fileWith(nlohmann::json::object({{"x", 1}}))).find("my.json: " + k.key), std::string::npos) << k.key;
     if (k.range.front() != '[' && k.range.front() != '(') continue;  // a choice: its names are tested above
     char* end = nullptr;
     const double lo = std::strtod(k.range.c_str() + 1, &end), hi = std::strtod(end + 1, &end);
     const bool array = nlohmann::json::parse(k.defaultValue).is_array();
     for (double beyond : {k.range.front() == '(' ? lo : lo - 1, *end == ')' ? hi : hi + 1}) {
       const nlohmann::json value = array ? nlohmann::json::array({beyond, beyond, beyond}) : nlohmann::json(beyond);
-      const std::string error = errorOf(fileWith(value));
+      const std::string error = configErrorOf(fileWith(value));
       EXPECT_EQ(error.rfind("my.json: " + k.key + " ", 0), 0u) << k.key << " = " << beyond << ": " << error;
     }
   }
@@ -122,7 +117,7 @@ TEST(Config, EveryKeyRejectsValuesBeyondItsRangeNamingFileAndKey) {
 
 // The odometry drift injected for evaluation is an option of run and eval, not a key.
 TEST(Config, TheOdometryDriftIsNotAKey) {
-  EXPECT_EQ(errorOf(R"({"odometry": {"drift": {"scale": 0.007}}})"), "my.json: unknown key odometry.drift");
+  EXPECT_EQ(configErrorOf(R"({"odometry": {"drift": {"scale": 0.007}}})"), "my.json: unknown key odometry.drift");
   EXPECT_FALSE(Config{}.odometry.drift.active());
 }
 
@@ -137,7 +132,7 @@ TEST(Config, RemovedSwitchesAreUnknownKeys) {
     for (char& c : pointer) if (c == '.') c = '/';
     nlohmann::json file = nlohmann::json::object();
     file[nlohmann::json::json_pointer(pointer)] = true;
-    EXPECT_EQ(errorOf(file.dump()), std::string("my.json: unknown key ") + key);
+    EXPECT_EQ(configErrorOf(file.dump()), std::string("my.json: unknown key ") + key);
   }
 }
 
@@ -147,7 +142,7 @@ TEST(Config, TheGraphsDriftModel) {
   EXPECT_DOUBLE_EQ(c.graph.odometryTranslationSigmaPerM, 0.01);
   EXPECT_DOUBLE_EQ(c.graph.odometryRotationSigmaDegPerM, 0.02);
   EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
-  EXPECT_EQ(errorOf(R"({"graph": {"odometry_translation_sigma_per_m": -0.1}})"),
+  EXPECT_EQ(configErrorOf(R"({"graph": {"odometry_translation_sigma_per_m": -0.1}})"),
             "my.json: graph.odometry_translation_sigma_per_m = -0.1 is out of range (0, 10]");
 }
 
@@ -160,7 +155,7 @@ TEST(Config, GivenOdometrysDriftModel) {
   EXPECT_DOUBLE_EQ(c.graph.givenOdometryTranslationSigmaPerM, 0.005);
   EXPECT_DOUBLE_EQ(c.graph.givenOdometryRotationSigmaDegPerM, 0.002);
   EXPECT_EQ(formatConfig(parseConfig(formatConfig(c), "back.json")), formatConfig(c));
-  EXPECT_EQ(errorOf(R"({"graph": {"given_odometry_rotation_sigma_deg_per_m": 200}})"),
+  EXPECT_EQ(configErrorOf(R"({"graph": {"given_odometry_rotation_sigma_deg_per_m": 200}})"),
             "my.json: graph.given_odometry_rotation_sigma_deg_per_m = 200 is out of range (0, 180]");
 }
 

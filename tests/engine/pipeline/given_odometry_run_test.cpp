@@ -11,6 +11,7 @@
 #include "engine/io/tum_trajectory.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/pipeline/session.h"
+#include "run_output.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -18,10 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json metricsOf(const fs::path& out) {
-  std::ifstream in(out / "metrics.json");
-  return nlohmann::json::parse(in);
-}
+using test::metricsOf;
 
 double ateRmse(const nlohmann::json& m, const char* trajectory) { return m[trajectory]["ate_translation_m"]["rmse"].get<double>(); }
 double lateralRmse(const nlohmann::json& m, const char* trajectory) { return m[trajectory]["ate_lateral_m"]["rmse"].get<double>(); }
@@ -44,7 +42,7 @@ PoseDifference difference(const fs::path& a, const fs::path& b) {
   return d;
 }
 
-std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1); }
+using test::oneLine;
 
 }  // namespace
 

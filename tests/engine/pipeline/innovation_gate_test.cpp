@@ -2,25 +2,21 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <vector>
+
+#include "../geom/forward_step.h"
+#include "engine/geom/angles.h"
 
 namespace hdprior {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 Matrix6d stepInformation() {
   Eigen::Matrix<double, 6, 1> v;
-  v << 0.1 * kDeg, 0.1 * kDeg, 0.1 * kDeg, 0.01, 0.01, 0.01;
+  v << 0.1 * kDegree, 0.1 * kDegree, 0.1 * kDegree, 0.01, 0.01, 0.01;
   return v.cwiseAbs2().cwiseInverse().asDiagonal();
 }
 
-SE3 forward(double metres) {
-  SE3 T = SE3::Identity();
-  T.translation().x() = metres;
-  return T;
-}
+using test::forward;
 
 // A lateral prior (y observed, sigma 0.1 m) at (x, y), heading +x.
 PosePrior lateralPrior(double x, double y) {

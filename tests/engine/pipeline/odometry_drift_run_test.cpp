@@ -9,6 +9,7 @@
 #include "engine/eval/trajectory_errors.h"
 #include "engine/io/tum_trajectory.h"
 #include "engine/odom/odometry_drift.h"
+#include "run_output.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -16,12 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-nlohmann::json metricsOf(const fs::path& out) {
-  std::ifstream in(out / "metrics.json");
-  return nlohmann::json::parse(in);
-}
-
-std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1); }
+using test::metricsOf;
+using test::oneLine;
 
 }  // namespace
 

@@ -5,15 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numbers>
 
+#include "../geom/forward_step.h"
+#include "engine/geom/angles.h"
 #include "engine/pipeline/drift_model_likelihood.h"
 #include "engine/odom/keyframe.h"
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A step's information over [rotation, translation] with these standard deviations per axis.
 Matrix6d stepInformation(double rotationSigma, double translationSigma) {
@@ -22,12 +21,7 @@ Matrix6d stepInformation(double rotationSigma, double translationSigma) {
   return v.cwiseAbs2().cwiseInverse().asDiagonal();
 }
 
-SE3 forward(double metres, double yaw = 0.0) {
-  SE3 T = SE3::Identity();
-  T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation().x() = metres;
-  return T;
-}
+using test::forward;
 
 // A lateral prior (y observed only, vehicle heading +x) with this sigma.
 Eigen::Matrix3d lateralInformation(double sigma) { return Eigen::Vector3d(0.0, 1.0 / (sigma * sigma), 0.0).asDiagonal(); }
@@ -50,19 +44,19 @@ TEST(PlanarKalman, ChiSquareQuantilesAreTheTabulatedOnes) {
 
 TEST(PlanarKalman, AHeadingUncertaintyBecomesALateralOneAlongTheWay) {
   PlanarKalman filter;
-  filter.predict(forward(10.0), stepInformation(1.0 * kDeg, 0.01));
+  filter.predict(forward(10.0), stepInformation(1.0 * kDegree, 0.01));
   // The start is fixed: after one step the covariance is the step's own.
   EXPECT_NEAR(filter.covariance()(0, 0), 1e-4, 1e-9);
-  EXPECT_NEAR(filter.covariance()(2, 2), std::pow(1.0 * kDeg, 2), 1e-9);
+  EXPECT_NEAR(filter.covariance()(2, 2), std::pow(1.0 * kDegree, 2), 1e-9);
   // The first step's yaw error turns the second: 10 m on, it is 10 m x 1 deg = 0.17 m across.
   filter.predict(forward(10.0), stepInformation(1e-6, 0.01));
-  EXPECT_NEAR(std::sqrt(filter.covariance()(1, 1)), std::hypot(0.01, 0.01, 10.0 * kDeg), 1e-3);
+  EXPECT_NEAR(std::sqrt(filter.covariance()(1, 1)), std::hypot(0.01, 0.01, 10.0 * kDegree), 1e-3);
   EXPECT_TRUE(filter.mean().isApprox(Eigen::Vector3d(20.0, 0.0, 0.0)));
 }
 
 TEST(PlanarKalman, AMatchFarAcrossTheRoadFromAGoodPredictionIsImprobable) {
   PlanarKalman filter;
-  filter.predict(forward(2.0), stepInformation(0.05 * kDeg, 0.05));
+  filter.predict(forward(2.0), stepInformation(0.05 * kDegree, 0.05));
   const PlanarKalman::Innovation far = filter.innovation(Eigen::Vector3d(2.0, 2.0, 0.0), lateralInformation(0.3));
   EXPECT_EQ(far.dof, 1);
   EXPECT_GT(far.chi2, chiSquareQuantile(0.99, 1));
@@ -75,8 +69,8 @@ TEST(PlanarKalman, AMatchFarAcrossTheRoadFromAGoodPredictionIsImprobable) {
 TEST(PlanarKalman, ADriftingPredictionAcceptsWhatAGoodOneRejects) {
   PlanarKalman good, drifting;
   for (int i = 0; i < 20; ++i) {
-    good.predict(forward(10.0), stepInformation(0.01 * kDeg, 0.01));
-    drifting.predict(forward(10.0), stepInformation(0.1 * kDeg, 0.07));  // 0.7 % and 1 deg / 100 m
+    good.predict(forward(10.0), stepInformation(0.01 * kDegree, 0.01));
+    drifting.predict(forward(10.0), stepInformation(0.1 * kDegree, 0.07));  // 0.7 % and 1 deg / 100 m
   }
   const Eigen::Vector3d prior(200.0, 1.5, 0.0);
   EXPECT_GT(good.innovation(prior, lateralInformation(0.3)).chi2, chiSquareQuantile(0.99, 1));
@@ -85,7 +79,7 @@ TEST(PlanarKalman, ADriftingPredictionAcceptsWhatAGoodOneRejects) {
 
 TEST(PlanarKalman, APriorCorrectsAndShrinksOnlyWhatItObserves) {
   PlanarKalman filter;
-  filter.predict(forward(10.0), stepInformation(0.5 * kDeg, 0.2));
+  filter.predict(forward(10.0), stepInformation(0.5 * kDegree, 0.2));
   const Eigen::Matrix3d before = filter.covariance();
   filter.update(filter.innovation(Eigen::Vector3d(10.0, 0.4, 0.0), lateralInformation(0.2)));
   EXPECT_NEAR(filter.covariance()(0, 0), before(0, 0), 1e-12);  // along: unobserved, unchanged
@@ -124,7 +118,7 @@ PoseGraphOptions likeliestModel(double yawBiasPerStep) { return driftRun(yawBias
 
 TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
   const PoseGraphOptions configured;
-  const PoseGraphOptions drifting = likeliestModel(0.02 * kDeg), exact = likeliestModel(0.0);
+  const PoseGraphOptions drifting = likeliestModel(0.02 * kDegree), exact = likeliestModel(0.0);
   EXPECT_GE(drifting.odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
   EXPECT_EQ(exact.odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);  // never below the configured
   EXPECT_EQ(drifting.odometryTranslationSigmaPerM / configured.odometryTranslationSigmaPerM,
@@ -135,7 +129,7 @@ TEST(DriftModelLikelihood, PicksAModelLooseEnoughForTheDriftThePriorsShow) {
 // priors show clearly still gets through a margin of 2 nats.
 TEST(DriftModelLikelihood, AMarginKeepsTheConfiguredModelWhereALooserOneIsBarelyLikelier) {
   const PoseGraphOptions configured;
-  const double kWeakBias = 0.002 * kDeg;  // 30x is 0.4 nats likelier than 1x
+  const double kWeakBias = 0.002 * kDegree;  // 30x is 0.4 nats likelier than 1x
   const DriftModelLikelihood weak = driftRun(kWeakBias);
   const auto scored = weak.scored();
   double gain = 0.0;
@@ -144,14 +138,14 @@ TEST(DriftModelLikelihood, AMarginKeepsTheConfiguredModelWhereALooserOneIsBarely
   ASSERT_GT(weak.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
   EXPECT_EQ(driftRun(kWeakBias, gain * 1.01).likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
   EXPECT_GT(driftRun(kWeakBias, gain * 0.99).likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
-  EXPECT_GE(driftRun(0.02 * kDeg, 2.0).likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
+  EXPECT_GE(driftRun(0.02 * kDegree, 2.0).likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
 }
 
 // scored() is what metrics.json shows: each candidate's log-likelihood, and one chosen, the one the
 // final solve takes (the tightest within the margin of the likeliest).
 TEST(DriftModelLikelihood, ScoredShowsEveryCandidateAndTheOneChosen) {
   for (double margin : {0.0, 1.0, 100.0}) {
-    const DriftModelLikelihood run = driftRun(0.002 * kDeg, margin);
+    const DriftModelLikelihood run = driftRun(0.002 * kDegree, margin);
     const auto scored = run.scored();
     ASSERT_EQ(scored.size(), 10u);  // five drift factors, field or independent
     int chosen = 0;
@@ -181,7 +175,7 @@ TEST(PlanarKalman, AMapErrorFieldTakesASharedOffsetForTheMapsNotThePoses) {
   PlanarKalman independent, field(Eigen::Vector3d::Zero(), 50.0);
   for (PlanarKalman* f : {&independent, &field}) {
     priorsSharingOneMapError([&](const PosePrior& p) { f->update(f->innovation(p)); },
-                             [&] { f->predict(forward(2.0), stepInformation(0.003 * kDeg, 0.005)); });
+                             [&] { f->predict(forward(2.0), stepInformation(0.003 * kDegree, 0.005)); });
   }
   // Taken as independent, eighty priors 0.25 m off pull the pose most of the way; as one field, the
   // offset is the map's, learnt where the start pins the pose, and the pose stays near the truth.

@@ -6,6 +6,7 @@
 
 #include "engine/io/lidar_sweep.h"
 #include "engine/io/tum_trajectory.h"
+#include "run_output.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -22,7 +23,7 @@ fs::path logWithoutSweeps(const std::string& name) {
   return dir;
 }
 
-std::string oneLine(const std::string& s) { return s.substr(0, s.find('\n') + 1); }
+using test::oneLine;
 
 }  // namespace
 

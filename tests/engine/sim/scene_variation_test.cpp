@@ -1,12 +1,12 @@
 // Scene families: the draw is deterministic, within its ranges and different per family; the
 // neutral default changes nothing; the drawn lidar errors reach the ray caster but not the
 // calibration written.
+#include "engine/geom/angles.h"
 #include "engine/sim/scene_variation.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -14,8 +14,6 @@
 
 namespace hdprior {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(SceneVariation, DrawIsDeterministicAndWithinRanges) {
   for (SceneFamily family : {SceneFamily::Tuning, SceneFamily::Validation}) {
@@ -57,9 +55,9 @@ TEST(SceneVariation, DrawIsDeterministicAndWithinRanges) {
       EXPECT_GE(v.maxRoadWidth, 18.0);
       ASSERT_EQ(v.elevationErrors.size(), 64u);
       ASSERT_EQ(v.rangeBiases.size(), 64u);
-      for (double e : v.elevationErrors) EXPECT_LE(std::abs(e), 0.2 * kDeg);
+      for (double e : v.elevationErrors) EXPECT_LE(std::abs(e), 0.2 * kDegree);
       for (double b : v.rangeBiases) EXPECT_LE(std::abs(b), 0.03);
-      EXPECT_LE(v.downRotationError.norm(), 0.3 * kDeg);
+      EXPECT_LE(v.downRotationError.norm(), 0.3 * kDegree);
       EXPECT_LE(v.downTranslationError.norm(), 0.02);
     }
   }
@@ -75,7 +73,7 @@ TEST(SceneVariation, DrawsSpanTheirRanges) {
   }
   EXPECT_LT(lo, 0.03);
   EXPECT_GT(hi, 0.27);
-  EXPECT_GT(maxError, 0.25 * kDeg);
+  EXPECT_GT(maxError, 0.25 * kDegree);
 }
 
 TEST(SceneVariation, TuningAndValidationDrawDifferentWorldsForTheSameSeed) {
