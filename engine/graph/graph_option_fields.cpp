@@ -14,9 +14,9 @@ std::vector<OptionField> optionFields(PoseGraphOptions& o) {
   return {
       {"prior_huber", &o.priorHuber, "(0, 1000000]", "", "Huber loss on the prior residuals, whitened"},
       {"max_iterations", &o.maxIterations, "[1, 10000]", "", "Ceres iterations per solve"},
-      {"odometry_translation_sigma_per_m", &o.odometryTranslationSigmaPerM, "(0, 10]", "m/m", "the built-in odometry's drift model, per metre travelled"},
+      {"odometry_translation_sigma_per_m", &o.odometryTranslationSigmaPerM, "(0, 10]", "m/m", "the built-in odometry's drift model per metre travelled, from which the estimate (x0.01 to x1000) starts"},
       {"odometry_rotation_sigma_deg_per_m", &o.odometryRotationSigmaDegPerM, "(0, 180]", "deg/m", "the same in rotation"},
-      {"given_odometry_translation_sigma_per_m", &o.givenOdometryTranslationSigmaPerM, "(0, 10]", "m/m", "the drift model of a trajectory file (run --odometry)"},
+      {"given_odometry_translation_sigma_per_m", &o.givenOdometryTranslationSigmaPerM, "(0, 10]", "m/m", "the same for a trajectory file (run --odometry)"},
       {"given_odometry_rotation_sigma_deg_per_m", &o.givenOdometryRotationSigmaDegPerM, "(0, 180]", "deg/m", "the same in rotation"},
       {"map_error_length", &o.mapErrorLength, "[0, 1000000]", "m", "the map's error is correlated along the route over this (0: independent per prior)"},
       {"drift_model_margin_nats", &o.driftModelMarginNats, "[0, 1000000]", "nats", "the final solve takes the tightest drift model this close to the likeliest"}};

@@ -1,6 +1,5 @@
 #include "engine/graph/odometry_information.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -31,21 +30,13 @@ Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& prev
   return covariance.inverse();
 }
 
-PoseGraphOptions coveringOdometryDrift(const PoseGraphOptions& options, const OdometryDrift& drift) {
-  PoseGraphOptions out = options;
-  out.odometryTranslationSigmaPerM = std::max(out.odometryTranslationSigmaPerM, std::abs(drift.scale));
-  const double degPerM = std::max(std::abs(drift.yawDegPer100m), std::abs(drift.pitchDegPer100m)) / 100.0;
-  out.odometryRotationSigmaDegPerM = std::max(out.odometryRotationSigmaDegPerM, degPerM);
-  return out;
-}
-
-PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses, const OdometryDrift& drift) {
+PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses) {
   PoseGraphOptions out = options;
   if (givenPoses) {
     out.odometryTranslationSigmaPerM = options.givenOdometryTranslationSigmaPerM;
     out.odometryRotationSigmaDegPerM = options.givenOdometryRotationSigmaDegPerM;
   }
-  return coveringOdometryDrift(out, drift);
+  return out;
 }
 
 }  // namespace hdprior

@@ -3,7 +3,6 @@
 
 #include "engine/geom/se3.h"
 #include "engine/graph/pose_graph.h"
-#include "engine/odom/odometry_drift.h"
 
 namespace hdprior {
 
@@ -20,13 +19,9 @@ Eigen::Matrix<double, 6, 1> odometryDriftVariances(double distance, const PoseGr
 // covariance that is not positive on the diagonal or not finite gives a weak 1e-2 * identity.
 Matrix6d odometryInformation(const Matrix6d& relativeCovariance, const SE3& previousTThis, const PoseGraphOptions& options);
 
-// The graph options with a drift model at least as wide as a known, injected drift: translation
-// sigma per metre >= |scale|, rotation sigma per metre >= max(|yaw|, |pitch|) / 100 degrees.
-PoseGraphOptions coveringOdometryDrift(const PoseGraphOptions& options, const OdometryDrift& drift);
-
-// The drift model the graph uses for an odometry source: the built-in odometry's per-metre sigmas, or
-// for poses given in a file (`givenPoses`) graph.given_odometry_*_per_m in their place; then covering
-// an injected drift (coveringOdometryDrift).
-PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses, const OdometryDrift& drift);
+// The drift model the graph starts from for an odometry source: the built-in odometry's per-metre
+// sigmas, or for poses given in a file (`givenPoses`) graph.given_odometry_*_per_m in their place.
+// An injected drift (odometry.drift) is not told to the model: the priors must show it.
+PoseGraphOptions odometryDriftModel(const PoseGraphOptions& options, bool givenPoses);
 
 }  // namespace hdprior

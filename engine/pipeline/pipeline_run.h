@@ -62,7 +62,7 @@ struct PipelineRun {
   size_t maxLocalMapPoints = 0;
   OdometryDrift odometryDrift;   // injected into the odometry's reported poses (config odometry.drift)
   std::optional<GivenOdometry> givenOdometry;  // where the odometry's poses came from, when from a file
-  PoseGraphOptions graphOptions;  // with priors: the graph's options in use (drift model covering odometryDrift)
+  PoseGraphOptions graphOptions;  // with priors: the graph's options in use (the drift model the priors made likeliest)
   std::vector<DriftModelLikelihood::Candidate> driftModelCandidates;  // with an estimated drift model
   std::vector<SkippedSweep> skippedSweeps;
   std::vector<size_t> frameSweeps;  // the log's sweep index of each odometry frame (they differ after a skip)

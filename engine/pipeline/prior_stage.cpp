@@ -28,7 +28,7 @@ PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTO
     : map_(map), config_(checked(config)), cityTOdom_(cityTOdom), givenPoses_(givenPoses),
       matcher_(std::make_unique<MapMatcher>(map, config.match)), graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
-  config_.graph = odometryDriftModel(config.graph, givenPoses_, config.odometry.drift);
+  config_.graph = odometryDriftModel(config.graph, givenPoses_);
 }
 
 PriorStage::~PriorStage() = default;
@@ -131,7 +131,7 @@ void PriorStage::rebuildGraph(const Odometry& odometry, const PosePriorOptions& 
   PosePriorOptions keys = prior;
   checkOptionRanges("prior options", optionFields(keys));
   config_.prior = prior;
-  config_.graph = odometryDriftModel(graph, givenPoses_, config_.odometry.drift);
+  config_.graph = odometryDriftModel(graph, givenPoses_);
   rebuild(odometry);
 }
 

@@ -57,7 +57,7 @@ struct PriorStageTimes {
 // road points (from its sweep), scan-to-map matching from the odometry pose
 // corrected by the graph so far, the pose prior (yaw, x, y from the match, z from the ground
 // height) for accepted and degenerate matches, the odometry between-factor (its covariance plus the
-// graph's drift model, widened to cover config.odometry.drift: engine/graph/odometry_information.h),
+// graph's drift model: engine/graph/odometry_information.h),
 // and an incremental, warm-started solve. finish() is the final batch solve.
 class PriorStage {
  public:
@@ -79,7 +79,7 @@ class PriorStage {
   const std::vector<KeyframeMatch>& matches() const { return matches_; }
   const PoseGraph& graph() const { return *graph_; }
   const PriorStageTimes& times() const { return times_; }
-  // The graph options in use: the configuration's, with the source's drift model covering odometry.drift.
+  // The graph options in use: the configuration's with the source's drift model, after finish() the likeliest.
   const PoseGraphOptions& graphOptions() const { return config_.graph; }
   // The drift models the priors were weighed under (empty before the first keyframe).
   std::vector<DriftModelLikelihood::Candidate> driftModelCandidates() const {
