@@ -9,7 +9,8 @@
 # Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2),
 # DURATION (seconds of every log instead of 30-40), FAMILIES (default "tuning validation") and
 # VALIDATION_BASE (200: towns 201.., seeds 2001..; another base, e.g. 300, draws a held-out set of
-# validation worlds that nothing has been looked at on).
+# validation worlds that nothing has been looked at on) and MAP_CHANGE (0: the share of the drivable
+# polygons changed in the written map, the same drives over a stale map; sim --map-change).
 set -euo pipefail
 if [[ $# -lt 1 || $# -gt 2 || "$1" == -* ]]; then
   echo "usage: scripts/make-families.sh OUT_DIR [N]" >&2
@@ -27,6 +28,7 @@ real="${REAL_LOG:-$root/../shared/data/av2/7fab2350-7eaf-3b7e-a39d-6937a4c1bede}
 threads="${THREADS:-2}"
 families="${FAMILIES:-tuning validation}"
 validation_base="${VALIDATION_BASE:-200}"
+map_change="${MAP_CHANGE:-0}"
 if ! [[ "$validation_base" =~ ^[0-9]+$ ]] || (( validation_base < 200 )); then
   echo "make-families.sh: VALIDATION_BASE must be an integer >= 200, not '$validation_base'" >&2
   exit 2
@@ -57,7 +59,7 @@ for family in $families; do
     fi
     echo "[$family $i/$n] $source, seed $seed, $seconds s" >&2
     id=$("$hdprior" sim "${args[@]}" --family "$family" --seed "$seed" --seconds "$seconds" \
-           --threads "$threads" --quiet --out "$out/$family")
+           --map-change "$map_change" --threads "$threads" --quiet --out "$out/$family")
     printf '%s\t%s\t%s\t%s\t%s\n' "$family" "$source" "$seed" "$seconds" "$id" >> "$index.partial"
   done
 done

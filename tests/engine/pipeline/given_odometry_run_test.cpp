@@ -137,7 +137,27 @@ TEST_F(GivenOdometryRun, KittiLinesAndTheCityFrame) {
 // 0.3 deg/100 m pitch, a seeded random walk) is refined by the priors. On this 45 m straight drive
 // the priors see the lateral error, not the scale; the accuracy on longer drives is measured in
 // docs/experiments/2026-12-02-given-odometry.md.
-TEST_F(GivenOdometryRun, DegradedGroundTruthIsRefined) {
+// A trajectory better than the priors (the truth with 0.05 % scale error and a little noise, as a
+// good lidar odometry) is kept: the drift model the priors make likeliest is tighter than the
+// file's configured one, and no prior's noise is taken into it.
+TEST_F(GivenOdometryRun, AGoodTrajectoryIsKept) {
+  const fs::path dir = test::freshOutputDir("given_run_good");
+  const fs::path file = dir / "good.tum";
+  const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() +
+                                     " --drift 0.0005,0.02 --random-walk 0.001,0.002 --seed 5");
+  ASSERT_EQ(made.status, 0) << made.err;
+  const auto r = run(dir / "run", "--odometry " + file.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto m = metricsOf(dir / "run");
+  const double given = ateRmse(m, "odometry"), optimized = ateRmse(m, "optimized");
+  std::printf("good trajectory: ATE rmse given %.4f m -> with priors %.4f m; drift model %s\n", given, optimized,
+              m["odometry_drift_model"]["translation_sigma_per_m"].dump().c_str());
+  EXPECT_LT(given, 0.05);
+  EXPECT_LE(optimized, 1.1 * given);
+  EXPECT_LT(m["odometry_drift_model"]["translation_sigma_per_m"].get<double>(), 0.01);
+}
+
+TEST_F(GivenOdometryRun, ADriftThePriorsCannotSeeOnAShortDriveIsKept) {
   const fs::path dir = test::freshOutputDir("given_run_degraded");
   const fs::path file = dir / "degraded.tum";
   const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() +
