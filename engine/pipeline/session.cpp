@@ -189,6 +189,8 @@ std::vector<SE3> Session::keyframePoses() const {
 
 const PoseGraph* Session::graph() const { return priors_ ? &priors_->graph() : nullptr; }
 
+const PoseGraphOptions& Session::graphOptions() const { return priors_ ? priors_->graphOptions() : config_.graph; }
+
 PipelineRun Session::finish(double mapVoxel) {
   PipelineRun run;
   run.cityTOdom = cityTOdom_;

@@ -70,6 +70,8 @@ class Session {
   const std::vector<KeyframeMatch>& matches() const;  // one per keyframe (empty without priors)
   std::vector<SE3> keyframePoses() const;              // the graph's (or the odometry's) keyframe poses
   const PoseGraph* graph() const;
+  // The graph's options in use: after a solve, with the drift model the priors made likeliest.
+  const PoseGraphOptions& graphOptions() const;
   const StageTimes& times() const { return times_; }
   const std::vector<SkippedSweep>& skippedSweeps() const { return skipped_; }
   // Odometry frames (Keyframe::frame, KeyframeMatch::frame) are the sweeps read: the log's sweep

@@ -28,7 +28,13 @@ void drawWeights(AppState& state) {
   ImGui::SliderInt("max iterations", &g.maxIterations, 1, 200);
   sliderD("odometry sigma per m", g.odometryTranslationSigmaPerM, 1e-5, 0.05, "%.5f");  // the schema's (0, 10]
   sliderD("odometry sigma (deg/m)", g.odometryRotationSigmaDegPerM, 1e-5, 0.1, "%.5f");
+  const Session* session = state.bench().runner().session();
   ImGui::PopItemWidth();
+  if (session != nullptr && !state.bench().runner().busy() && session->hasPriors() && state.bench().runner().lastSolve()) {
+    const PoseGraphOptions& used = session->graphOptions();
+    ImGui::TextWrapped("the solve's drift model, learnt from the priors: %.2g m/m, %.2g deg/m",
+                       used.odometryTranslationSigmaPerM, used.odometryRotationSigmaDegPerM);
+  }
 }
 
 void drawSummary(AppState& state) {
