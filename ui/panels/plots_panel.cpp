@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/eval/axis_ticks.h"
 #include "ui/app_state.h"
 #include "ui/ate_series.h"
 #include "ui/panels/diagnostic_plot_view.h"
@@ -41,13 +42,11 @@ void drawSeries(ImDrawList* draw, const PlotArea& area, const std::vector<double
 
 void drawAxes(ImDrawList* draw, const PlotArea& area) {
   const ImU32 grid = IM_COL32(255, 255, 255, 40), text = IM_COL32(200, 200, 200, 255);
-  for (int i = 0; i <= 5; ++i) {
-    const double e = area.high * i / 5.0;
-    const float y = area.yOf(e);
+  const AxisTicks ticks = axisTicks(0.0, area.high, 5);
+  for (int k = 0; k <= ticks.count() && ticks.at(k) <= area.high * (1.0 + 1e-9); ++k) {
+    const float y = area.yOf(ticks.at(k));
     draw->AddLine(ImVec2(area.min.x, y), ImVec2(area.max.x, y), grid);
-    char label[32];
-    std::snprintf(label, sizeof label, area.high < 0.1 ? "%.3f" : "%.2f", e);
-    draw->AddText(ImVec2(area.min.x - 46, y - 7), text, label);
+    draw->AddText(ImVec2(area.min.x - 46, y - 7), text, tickLabel(ticks.at(k), ticks.decimals).c_str());
   }
   draw->AddRect(area.min, area.max, IM_COL32(255, 255, 255, 90));
 }
