@@ -1,6 +1,7 @@
 #include "engine/pipeline/drift_model_likelihood.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "engine/graph/odometry_information.h"
@@ -10,15 +11,13 @@ namespace hdprior {
 
 namespace {
 
-// Half decades from a hundredth to a hundred times the configured model: the data decide, both ways.
-constexpr double kDriftFactors[] = {0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0};
-
 std::vector<DriftModelLikelihood::Candidate> candidatesFor(const PoseGraphOptions& configured) {
   std::vector<double> lengths{configured.mapErrorLength};
   if (configured.mapErrorLength > 0.0) lengths.push_back(0.0);
   std::vector<DriftModelLikelihood::Candidate> out;
   for (double length : lengths) {
-    for (double factor : kDriftFactors) out.push_back({factor, length});
+    // Quarter decades from a hundredth to a thousand times the configured model: the data decide, both ways.
+    for (int k = -8; k <= 12; ++k) out.push_back({std::pow(10.0, k / 4.0), length});
   }
   return out;
 }

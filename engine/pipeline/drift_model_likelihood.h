@@ -14,10 +14,10 @@ struct Keyframe;
 // How far the odometry drifts, as the priors see it. The graph's drift model (per-metre sigmas)
 // decides how far the priors may move the odometry, and one model cannot serve every log: a good
 // odometry must stay where it is, a drifting one be pulled to the map. Each candidate model (the
-// configured per-metre sigmas times a factor, from 0.01 to 100) runs a planar Kalman filter from the
-// start over the odometry steps and the priors the graph takes; the tightest candidate within the
-// margin of the likeliest (the product of the priors' innovation densities) is the model for the
-// final solve. Tighter means the odometry is kept where the priors cannot tell it is wrong.
+// configured per-metre sigmas times a factor, 0.01 to 1000 in quarter decades) runs a planar
+// Kalman filter from the start over the odometry steps and the priors the graph takes; the tightest
+// candidate within the margin of the likeliest (the product of the priors' innovation densities) is
+// the model for the final solve. Tighter means the odometry is kept where the priors cannot tell it is wrong.
 // With a map error length the filters carry the map's offset as the graph does, so that a run of
 // priors sharing one map error is not read as drift; each factor is then tried with the map error
 // as that field and as independent per prior (a map better than its sigma, where the field would

@@ -137,7 +137,7 @@ TEST_F(OdometryDriftRun, PriorsCorrectTheInjectedDrift) {
   // metrics.json shows the evidence for the pick: every candidate's log-likelihood, and the pick is
   // the tightest candidate within the margin of the likeliest.
   const auto& model = m["odometry_drift_model"];
-  ASSERT_EQ(model["candidates"].size(), 22u) << model;
+  ASSERT_EQ(model["candidates"].size(), 42u) << model;
   double best = -1e300;
   for (const auto& c : model["candidates"]) best = std::max(best, c["log_likelihood"].get<double>());
   const double margin = model["margin_nats"].get<double>();
