@@ -53,6 +53,11 @@ std::string sessionReport(TuningBench& bench, const Session* session) {
   if (const auto& s = bench.runner().lastSolve()) {
     std::snprintf(line, sizeof line, "solve: iterations %d cost %.6g -> %.6g\n", s->iterations, s->initialCost, s->finalCost);
     out += line;
+    if (session->hasPriors()) {
+      const PoseGraphOptions& g = session->graphOptions();
+      std::snprintf(line, sizeof line, "drift model: %.4g m/m %.4g deg/m\n", g.odometryTranslationSigmaPerM, g.odometryRotationSigmaDegPerM);
+      out += line;
+    }
   }
   if (const auto& rows = bench.history.rows(); !rows.empty()) {
     std::string changes;

@@ -133,6 +133,10 @@ TEST(ViewCommand, BenchRunsTheMatchAndTheOptimisationOfItsPanels) {
   EXPECT_NE(r.out.find("bench: sweeps 1/2 keyframes 1\npriors: 1 full\nmatch: keyframe 0 frame 0"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("bench: sweeps 2/2 keyframes 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("solve: iterations"), std::string::npos) << r.out;
+  // The drift model the solve learnt from the priors, as the PGO tab shows it.
+  const std::vector<double> drift = numbersAfter(r.out, "drift model: ", 1);
+  ASSERT_EQ(drift.size(), 1u) << r.out;
+  EXPECT_GT(drift[0], 0.0);
   const std::vector<double> estimate = numbersAfter(r.out, "estimate ", 3);
   ASSERT_EQ(estimate.size(), 3u) << r.out;
 

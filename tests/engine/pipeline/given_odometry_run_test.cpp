@@ -66,6 +66,13 @@ class GivenOdometryRun : public ::testing::Test {
     delete sameModel_;
     log_ = untimed_ = sameModel_ = nullptr;
   }
+  // The log's truth degraded by `degrade-trajectory ... DEGRADE` into dir/name.
+  static fs::path degradedTruth(const fs::path& dir, const std::string& name, const std::string& degrade) {
+    const fs::path file = dir / name;
+    const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() + " " + degrade);
+    EXPECT_EQ(made.status, 0) << made.err;
+    return file;
+  }
   static test::CommandResult run(const fs::path& out, const std::string& options, const fs::path* config = untimed_) {
     return test::runHdprior("run " + log_->string() + " --out " + out.string() + " --config " + config->string() + " " + options);
   }
@@ -133,19 +140,12 @@ TEST_F(GivenOdometryRun, KittiLinesAndTheCityFrame) {
   EXPECT_EQ(metricsOf(dir / "city")["odometry_source"]["frame"], "city");
 }
 
-// The ground truth degraded as real lidar odometry drifts (0.7 % scale, 0.5 deg/100 m yaw,
-// 0.3 deg/100 m pitch, a seeded random walk) is refined by the priors. On this 45 m straight drive
-// the priors see the lateral error, not the scale; the accuracy on longer drives is measured in
-// docs/experiments/2026-12-02-given-odometry.md.
 // A trajectory better than the priors (the truth with 0.05 % scale error and a little noise, as a
 // good lidar odometry) is kept: the drift model the priors make likeliest is tighter than the
 // file's configured one, and no prior's noise is taken into it.
 TEST_F(GivenOdometryRun, AGoodTrajectoryIsKept) {
   const fs::path dir = test::freshOutputDir("given_run_good");
-  const fs::path file = dir / "good.tum";
-  const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() +
-                                     " --drift 0.0005,0.02 --random-walk 0.001,0.002 --seed 5");
-  ASSERT_EQ(made.status, 0) << made.err;
+  const fs::path file = degradedTruth(dir, "good.tum", "--drift 0.0005,0.02 --random-walk 0.001,0.002 --seed 5");
   const auto r = run(dir / "run", "--odometry " + file.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto m = metricsOf(dir / "run");
@@ -157,16 +157,13 @@ TEST_F(GivenOdometryRun, AGoodTrajectoryIsKept) {
   EXPECT_LT(m["odometry_drift_model"]["translation_sigma_per_m"].get<double>(), 0.01);
 }
 
+// The ground truth degraded as real lidar odometry drifts (0.7 % scale, 0.5 deg/100 m yaw,
+// 0.3 deg/100 m pitch, a seeded random walk), reproducibly.
 TEST_F(GivenOdometryRun, ADriftThePriorsCannotSeeOnAShortDriveIsKept) {
   const fs::path dir = test::freshOutputDir("given_run_degraded");
-  const fs::path file = dir / "degraded.tum";
-  const auto made = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + file.string() +
-                                     " --drift 0.007,0.5,0.3 --random-walk 0.002,0.002 --seed 3");
-  ASSERT_EQ(made.status, 0) << made.err;
-  const auto again = test::runHdprior("degrade-trajectory " + log_->string() + " --out " + (dir / "again.tum").string() +
-                                      " --drift 0.007,0.5,0.3 --random-walk 0.002,0.002 --seed 3");
-  ASSERT_EQ(again.status, 0) << again.err;
-  EXPECT_EQ(test::readFileText(file), test::readFileText(dir / "again.tum"));
+  const std::string degrade = "--drift 0.007,0.5,0.3 --random-walk 0.002,0.002 --seed 3";
+  const fs::path file = degradedTruth(dir, "degraded.tum", degrade);
+  EXPECT_EQ(test::readFileText(file), test::readFileText(degradedTruth(dir, "again.tum", degrade)));
 
   const auto r = run(dir / "run", "--odometry " + file.string());
   ASSERT_EQ(r.status, 0) << r.err;
@@ -178,7 +175,7 @@ TEST_F(GivenOdometryRun, ADriftThePriorsCannotSeeOnAShortDriveIsKept) {
   EXPECT_TRUE(std::isfinite(optimized));
   // 45 m: the scale error (along the road) is invisible to the priors, and the 4 cm lateral error is
   // well inside their sigmas, so they cannot tell this file from a good one: it is kept, not spoiled
-  // (a 0.7 % drift over the validation family's 150 m drives is seen and corrected: README).
+  // (over the validation family's 150 m drives the lateral part of such a drift is corrected: README).
   EXPECT_LE(optimized, 1.02 * given);
   EXPECT_LE(lateralRmse(m, "optimized"), 1.05 * lateralRmse(m, "odometry"));
   // The file's model is the start of the estimate: the chosen one is a factor of it.
