@@ -17,7 +17,8 @@ struct Keyframe;
 // configured per-metre sigmas times a factor, 0.01 to 1000 in quarter decades) runs a planar
 // Kalman filter from the start over the odometry steps and the priors the graph takes; the tightest
 // candidate within the margin of the likeliest (the product of the priors' innovation densities) is
-// the model for the final solve. Tighter means the odometry is kept where the priors cannot tell it is wrong.
+// the model for the final solve. Tighter means the odometry is kept where the priors cannot tell
+// it is wrong.
 // With a map error length the filters carry the map's offset as the graph does, so that a run of
 // priors sharing one map error is not read as drift; each factor is then tried with the map error
 // as that field and as independent per prior (a map better than its sigma, where the field would
