@@ -29,5 +29,6 @@ Command addMergeCommand(CLI::App& hdprior);
 Command addDegradeTrajectoryCommand(CLI::App& hdprior);
 Command addConfigCommand(CLI::App& hdprior);
 Command addPlotCommand(CLI::App& hdprior);
+Command addChangesCommand(CLI::App& hdprior);
 
 }  // namespace hdprior::app

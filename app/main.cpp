@@ -19,7 +19,7 @@ std::vector<Command> addCommands(CLI::App& hdprior) {
   std::vector<Command> commands;
   for (auto add : {addInfoCommand, addExportMapCommand, addRunCommand, addEvalCommand, addMergeCommand,
                    addDegradeTrajectoryCommand, addDemoCommand, addSimCommand, addMatchCommand, addSnapshotCommand,
-                   addPlotCommand, addViewCommand, addConfigCommand}) {
+                   addPlotCommand, addViewCommand, addConfigCommand, addChangesCommand}) {
     commands.push_back(add(hdprior));
   }
   return commands;

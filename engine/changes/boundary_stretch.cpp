@@ -1,0 +1,102 @@
+#include "engine/changes/boundary_stretch.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/changes/boundary_reading.h"
+#include "engine/changes/boundary_samples.h"
+#include "engine/map/boundary_distance.h"
+
+namespace hdprior {
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+double saturation(int samples, int scale) { return 1.0 - std::exp(-double(samples) / double(scale)); }
+
+struct Reading {
+  BoundarySample sample;
+  BoundaryReading reading;
+};
+
+bool contradicts(const BoundaryReading& r, const ChangeOptions& o) {
+  return (r.kind == BoundaryReading::Kind::Edge && std::abs(r.offset) > o.tolerance) || r.kind == BoundaryReading::Kind::NoRoad;
+}
+
+std::string evidenceOf(double offset, bool contradicted, const ChangeOptions& o) {
+  if (!contradicted) return "kerb_offset";
+  if (offset <= -o.reach) return "no_road_inside";
+  return offset > 0 ? "road_beyond_boundary" : "no_road_inside";
+}
+
+BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1, const std::vector<Reading>& readings,
+                      const ChangeOptions& o) {
+  BoundaryStretch s;
+  s.areaId = area.id;
+  s.index = index;
+  s.line = boundaryBetween(area.areaBoundary, a0, a1);
+  s.samples = int(readings.size());
+  std::vector<double> observed, against;
+  double ground = 0;
+  int groundCount = 0;
+  for (const Reading& r : readings) {
+    const BoundaryReading& b = r.reading;
+    if (b.kind == BoundaryReading::Kind::Unobserved) continue;
+    if (b.kind == BoundaryReading::Kind::Open) {
+      ++s.open;
+      continue;
+    }
+    ++s.observed;
+    observed.push_back(b.offset);
+    if (contradicts(b, o)) against.push_back(b.offset);
+    s.curbPoints += b.curbPoints;
+    if (std::isfinite(b.groundOffset)) ground += b.groundOffset, ++groundCount;
+    if (b.firstFrame >= 0 && (s.firstFrame < 0 || b.firstFrame < s.firstFrame)) s.firstFrame = b.firstFrame;
+    if (s.bestFrame < 0 && b.bestFrame >= 0) s.bestFrame = b.bestFrame;
+  }
+  s.contradicted = int(against.size());
+  s.groundOffset = groundCount > 0 ? ground / groundCount : NAN;
+  if (s.observed < o.minSamples) {
+    if (s.open >= o.minSamples) s.evidence = "road_continues";
+    return s;
+  }
+  const double share = double(s.contradicted) / double(s.observed);
+  const bool contradicted = s.contradicted >= o.minSamples && share >= o.contradictedShare;
+  s.verdict = contradicted ? MapVerdict::Contradicted : MapVerdict::Consistent;
+  s.offset = median(contradicted ? against : observed);
+  s.evidence = evidenceOf(s.offset, contradicted, o);
+  s.confidence = contradicted ? share * saturation(s.contradicted, o.minSamples)
+                              : (1.0 - share) * saturation(s.observed - s.contradicted, o.minSamples);
+  return s;
+}
+
+}  // namespace
+
+std::vector<BoundaryStretch> checkBoundary(const DrivableArea& area, const SurfaceEvidence& evidence,
+                                           const BoundaryDistance& drivableDistance, const ChangeOptions& options) {
+  const double length = perimeter(area.areaBoundary);
+  const int stretches = std::max(1, int(std::round(length / options.stretchLength)));
+  std::vector<std::vector<Reading>> byStretch(static_cast<size_t>(stretches));
+  std::vector<bool> onBoundary(static_cast<size_t>(stretches), false);
+  for (const BoundarySample& s : sampleBoundary(area.areaBoundary, options.sampleSpacing)) {
+    const size_t k = std::min(size_t(stretches) - 1, size_t(s.arc / length * stretches));
+    const double inside = drivableDistance.distance(s.point);
+    if (!(std::abs(inside) <= options.seamDepth)) continue;  // a seam, or outside the distance field
+    onBoundary[k] = true;
+    if (!evidence.cellAt(s.point)) continue;
+    byStretch[k].push_back({s, readBoundary(evidence, s, options)});
+  }
+  std::vector<BoundaryStretch> out;
+  for (int k = 0; k < stretches; ++k) {
+    if (!onBoundary[size_t(k)]) continue;
+    out.push_back(judge(area, k, k * length / stretches, (k + 1) * length / stretches, byStretch[size_t(k)], options));
+  }
+  return out;
+}
+
+}  // namespace hdprior

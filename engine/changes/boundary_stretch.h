@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/changes/change_options.h"
+#include "engine/changes/map_verdict.h"
+#include "engine/changes/surface_evidence.h"
+#include "engine/io/vector_map.h"
+
+namespace hdprior {
+
+class BoundaryDistance;
+
+// A stretch of a drivable area's boundary (ChangeOptions::stretchLength) and what the lidar says of it.
+struct BoundaryStretch {
+  int64_t areaId = 0;
+  int index = 0;                      // along the polygon's boundary from its first vertex
+  std::vector<Eigen::Vector2d> line;  // city frame
+  MapVerdict verdict = MapVerdict::Unobserved;
+  double confidence = 0.0;  // 0..1: how sure the verdict is, from the share and the number of samples agreeing
+  int samples = 0, observed = 0, contradicted = 0, open = 0;  // boundary samples, ChangeOptions::sampleSpacing apart
+  // The evidence: where the lidar's road edge lies, metres outwards of the map's boundary
+  // (median over the contradicting samples, else over the observed ones), and what it is.
+  double offset = 0.0;
+  std::string evidence;  // "kerb_offset", "road_beyond_boundary", "no_road_inside", "road_continues" or ""
+  int curbPoints = 0;
+  double groundOffset = 0.0;  // lidar ground minus the ground-height raster, mean, metres (NaN: none)
+  int firstFrame = -1, bestFrame = -1;
+};
+
+// The verdicts of one polygon's boundary stretches. Samples that lie inside another polygon
+// (seams between polygons: no kerb is there to see) are left out; a stretch made of them only
+// is not returned.
+std::vector<BoundaryStretch> checkBoundary(const DrivableArea& area, const SurfaceEvidence& evidence,
+                                           const BoundaryDistance& drivableDistance, const ChangeOptions& options);
+
+}  // namespace hdprior

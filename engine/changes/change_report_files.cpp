@@ -1,0 +1,105 @@
+#include "engine/changes/change_report_files.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/file_bytes.h"
+
+namespace hdprior {
+
+namespace {
+
+using nlohmann::json;
+
+json coordinates(const std::vector<Eigen::Vector2d>& points, bool closed) {
+  json out = json::array();
+  for (const Eigen::Vector2d& p : points) out.push_back({p.x(), p.y()});
+  if (closed && !points.empty()) out.push_back({points.front().x(), points.front().y()});
+  return out;
+}
+
+json number(double v) { return std::isfinite(v) ? json(std::round(v * 1000.0) / 1000.0) : json(nullptr); }
+
+json stretchFeature(const BoundaryStretch& s) {
+  json evidence = {{"kind", s.evidence},
+                   {"offset_m", number(s.offset)},
+                   {"samples", s.samples},
+                   {"observed", s.observed},
+                   {"contradicted", s.contradicted},
+                   {"road_beyond", s.open},
+                   {"kerb_points", s.curbPoints},
+                   {"ground_offset_m", number(s.groundOffset)}};
+  json properties = {{"element", "drivable_area"},
+                     {"id", s.areaId},
+                     {"stretch", s.index},
+                     {"verdict", verdictName(s.verdict)},
+                     {"confidence", number(s.confidence)},
+                     {"first_frame", s.firstFrame},
+                     {"best_frame", s.bestFrame},
+                     {"evidence", evidence}};
+  if (s.verdict == MapVerdict::Contradicted) properties["change"] = "lane_geometry_change";
+  return {{"type", "Feature"},
+          {"geometry", {{"type", "LineString"}, {"coordinates", coordinates(s.line, false)}}},
+          {"properties", properties}};
+}
+
+json missingFeature(const MissingSurface& m) {
+  json evidence = {{"kind", "road_outside_map"},
+                   {"area_m2", number(m.area)},
+                   {"depth_m", number(m.depth)},
+                   {"road_points", m.roadPoints}};
+  return {{"type", "Feature"},
+          {"geometry", {{"type", "Polygon"}, {"coordinates", json::array({coordinates(m.outline, true)})}}},
+          {"properties",
+           {{"element", "drivable_area"},
+            {"id", nullptr},
+            {"verdict", "missing"},
+            {"confidence", number(m.confidence)},
+            {"first_frame", m.firstFrame},
+            {"best_frame", m.bestFrame},
+            {"evidence", evidence},
+            {"change", "lane_geometry_change"}}}};
+}
+
+}  // namespace
+
+std::string changesGeoJson(const MapChangeReport& report, const std::string& logId) {
+  json features = json::array();
+  for (const BoundaryStretch& s : report.stretches)
+    if (s.samples > 0) features.push_back(stretchFeature(s));
+  for (const MissingSurface& m : report.missing) features.push_back(missingFeature(m));
+  return json{{"type", "FeatureCollection"}, {"name", logId}, {"crs_note", "city frame of the log, metres"}, {"features", features}}
+             .dump(1) +
+         "\n";
+}
+
+std::string changeSummaryJson(const MapChangeReport& report, const std::string& logId) {
+  json areas = {{"consistent", 0}, {"contradicted", 0}, {"unobserved", 0}};
+  json stretches = {{"consistent", 0}, {"contradicted", 0}, {"unobserved", 0}};
+  json contradicted = json::array();
+  for (const DrivableAreaVerdict& v : report.drivableAreas) {
+    areas[verdictName(v.verdict)] = areas[verdictName(v.verdict)].get<int>() + 1;
+    if (v.verdict == MapVerdict::Contradicted) contradicted.push_back(v.id);
+  }
+  for (const BoundaryStretch& s : report.stretches)
+    if (s.samples > 0) stretches[verdictName(s.verdict)] = stretches[verdictName(s.verdict)].get<int>() + 1;
+  return json{{"log_id", logId},
+              {"frames", report.frames},
+              {"driven_km", number(report.drivenKm)},
+              {"observed_boundary_km", number(report.observedBoundaryKm)},
+              {"drivable_areas", areas},
+              {"contradicted_drivable_areas", contradicted},
+              {"boundary_stretches", stretches},
+              {"missing_surfaces", report.missing.size()}}
+             .dump(2) +
+         "\n";
+}
+
+void writeChangeReport(const std::filesystem::path& dir, const MapChangeReport& report, const std::string& logId) {
+  std::filesystem::create_directories(dir);
+  writeFileAtomically(dir / "changes.geojson", changesGeoJson(report, logId));
+  writeFileAtomically(dir / "summary.json", changeSummaryJson(report, logId));
+}
+
+}  // namespace hdprior

@@ -1,0 +1,97 @@
+#include "engine/changes/map_change_report.h"
+
+#include <map>
+
+#include "engine/changes/surface_classes.h"
+#include "engine/geom/se2.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/hd_map.h"
+
+namespace hdprior {
+
+namespace {
+
+// The sweeps to add: the first the poses cover, then one every `spacing` metres.
+std::vector<size_t> spacedSweeps(const ArgoverseLog& log, const PoseTrajectory& poses, double spacing, double& drivenM) {
+  std::vector<size_t> out;
+  Eigen::Vector3d last = Eigen::Vector3d::Zero();
+  drivenM = 0.0;
+  for (size_t i = 0; i < log.sweepCount(); ++i) {
+    const int64_t t = log.sweepTimestamps()[i];
+    if (!poses.covers(t)) continue;
+    const Eigen::Vector3d p = poses.at(t).translation();
+    if (out.empty() || (p - last).norm() >= spacing) {
+      if (!out.empty()) drivenM += (p - last).norm();
+      out.push_back(i);
+      last = p;
+    }
+  }
+  return out;
+}
+
+SurfaceEvidence evidenceGrid(const ArgoverseLog& log, const PoseTrajectory& poses, const std::vector<size_t>& sweeps,
+                             const SweepRoadPointOptions& roadPoints, const ChangeOptions& options) {
+  std::vector<Eigen::Vector2d> positions;
+  for (size_t i : sweeps) positions.push_back(poses.at(log.sweepTimestamps()[i]).translation().head<2>());
+  return SurfaceEvidence::around(positions, roadPoints.road.maxRange + options.reach, options.cell);
+}
+
+}  // namespace
+
+std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, const std::vector<BoundaryStretch>& stretches) {
+  std::map<int64_t, DrivableAreaVerdict> byId;
+  for (const DrivableArea& a : map.drivableAreas) byId[a.id].id = a.id;
+  auto rank = [](MapVerdict v) { return v == MapVerdict::Contradicted ? 2 : v == MapVerdict::Consistent ? 1 : 0; };
+  for (const BoundaryStretch& s : stretches) {
+    DrivableAreaVerdict& v = byId[s.areaId];
+    v.id = s.areaId;
+    if (rank(s.verdict) > rank(v.verdict) || (s.verdict == v.verdict && s.confidence > v.confidence)) {
+      v.verdict = s.verdict;
+      v.confidence = s.confidence;
+      v.bestFrame = s.bestFrame;
+    }
+    if (s.firstFrame >= 0 && s.verdict == v.verdict && (v.firstFrame < 0 || s.firstFrame < v.firstFrame)) v.firstFrame = s.firstFrame;
+  }
+  std::vector<DrivableAreaVerdict> out;
+  for (const DrivableArea& a : map.drivableAreas) out.push_back(byId[a.id]);
+  return out;
+}
+
+MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, const ChangeOptions& options) {
+  MapChangeReport report;
+  classifySurface(evidence, options);
+  const BoundaryDistance& distance = map.boundaryDistance();
+  for (const DrivableArea& area : map.vectorMap().drivableAreas)
+    for (BoundaryStretch& s : checkBoundary(area, evidence, distance, options)) {
+      if (s.verdict != MapVerdict::Unobserved) report.observedBoundaryKm += s.observed * options.sampleSpacing / 1000.0;
+      report.stretches.push_back(std::move(s));
+    }
+  report.drivableAreas = drivableAreaVerdicts(map.vectorMap(), report.stretches);
+  report.missing = findMissingSurfaces(evidence, distance, map.hasGroundHeight() ? &map.groundHeight() : nullptr, options);
+  report.evidence = std::move(evidence);
+  return report;
+}
+
+MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, const PoseTrajectory& poses,
+                                 const SweepRoadPointOptions& roadPoints, const ChangeOptions& options,
+                                 const std::function<void(size_t, size_t)>& progress, const std::atomic<bool>* cancel) {
+  double drivenM = 0.0;
+  const std::vector<size_t> sweeps = spacedSweeps(log, poses, options.frameSpacing, drivenM);
+  SurfaceEvidence evidence = evidenceGrid(log, poses, sweeps, roadPoints, options);
+  const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
+  size_t frames = 0;
+  for (size_t k = 0; k < sweeps.size(); ++k) {
+    if (cancel && cancel->load()) break;
+    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
+    const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k]);
+    evidence.add(int(sweeps[k]), *sweep, labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), cityTEgo, ground);
+    ++frames;
+    if (progress) progress(k + 1, sweeps.size());
+  }
+  MapChangeReport report = judgeMapChanges(std::move(evidence), map, options);
+  report.frames = frames;
+  report.drivenKm = drivenM / 1000.0;
+  return report;
+}
+
+}  // namespace hdprior
