@@ -1,0 +1,101 @@
+// The change check on a made-up street: what agrees with the map is consistent, a boundary
+// drawn in the wrong place is contradicted by as much as it is off, a drivable area over the
+// sidewalk is contradicted, and road the map lacks is a missing surface.
+#include "engine/changes/map_change_report.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/changes/synthetic_street.h"
+#include "engine/map/synthetic_maps.h"
+
+namespace hdprior {
+namespace {
+
+// The stretches of one polygon with a verdict.
+std::vector<BoundaryStretch> judged(const MapChangeReport& r, int64_t id) {
+  std::vector<BoundaryStretch> out;
+  for (const BoundaryStretch& s : r.stretches)
+    if (s.areaId == id && s.verdict != MapVerdict::Unobserved) out.push_back(s);
+  return out;
+}
+
+TEST(MapChangeReport, AMapThatAgreesWithTheKerbsIsConsistent) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(test::straightStreet), map, ChangeOptions{});
+  const std::vector<BoundaryStretch> seen = judged(r, 1);
+  ASSERT_GE(seen.size(), 6u);  // 40 m of each side
+  for (const BoundaryStretch& s : seen) {
+    EXPECT_EQ(s.verdict, MapVerdict::Consistent) << "stretch " << s.index;
+    EXPECT_LT(std::abs(s.offset), 0.5);
+  }
+  ASSERT_EQ(r.drivableAreas.size(), 1u);
+  EXPECT_EQ(r.drivableAreas[0].verdict, MapVerdict::Consistent);
+  EXPECT_TRUE(r.missing.empty());
+}
+
+TEST(MapChangeReport, ABoundaryDrawnTwoMetresInsideTheKerbIsContradictedByTwoMetres) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 3)});
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(test::straightStreet), map, ChangeOptions{});
+  int contradicted = 0, consistent = 0;
+  for (const BoundaryStretch& s : judged(r, 1)) {
+    const double y = s.line.front().y();
+    if (std::abs(y - 3.0) < 0.01) {
+      ++contradicted;
+      EXPECT_EQ(s.verdict, MapVerdict::Contradicted) << "stretch " << s.index;
+      EXPECT_NEAR(s.offset, 2.0, 0.3);
+      EXPECT_EQ(s.evidence, "road_beyond_boundary");
+      EXPECT_GT(s.confidence, 0.5);
+    } else if (std::abs(y + 5.0) < 0.01) {
+      ++consistent;
+      EXPECT_EQ(s.verdict, MapVerdict::Consistent) << "stretch " << s.index;
+    }
+  }
+  EXPECT_GE(contradicted, 3);
+  EXPECT_GE(consistent, 3);
+  EXPECT_EQ(r.drivableAreas[0].verdict, MapVerdict::Contradicted);
+  EXPECT_TRUE(r.missing.empty()) << "2 m is a boundary drawn wrong, not a missing surface";
+}
+
+TEST(MapChangeReport, ADrivableAreaOverTheSidewalkIsContradicted) {
+  // Polygon 2 paints 8 m of sidewalk as drivable beside the street.
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5), test::rectangle(-4, 4, 4, 13)});
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(test::straightStreet), map, ChangeOptions{});
+  const std::vector<BoundaryStretch> added = judged(r, 2);
+  ASSERT_FALSE(added.empty());
+  int against = 0;
+  for (const BoundaryStretch& s : added) against += s.verdict == MapVerdict::Contradicted;
+  EXPECT_GE(against, 1);
+  EXPECT_EQ(r.drivableAreas[1].verdict, MapVerdict::Contradicted);
+  for (const BoundaryStretch& s : added)
+    if (s.verdict == MapVerdict::Contradicted) EXPECT_EQ(s.evidence, "no_road_inside");
+}
+
+TEST(MapChangeReport, RoadTheMapLacksIsAMissingSurfaceWithItsOutline) {
+  // A side street 6 m wide leaves northwards at x in [-3, 3]; the map has only the street.
+  auto world = [](double x, double y) {
+    test::GroundPoint g = test::straightStreet(x, y);
+    if (y > 0 && std::abs(x) < 3.0) g.road = true;
+    return g;
+  };
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(world), map, ChangeOptions{});
+  ASSERT_EQ(r.missing.size(), 1u);
+  const MissingSurface& m = r.missing[0];
+  // Seen from y = 6 (1 m gap) to 20: 6 m x 14 m.
+  EXPECT_NEAR(m.area, 84.0, 12.0);
+  EXPECT_GT(m.depth, 8.0);  // the distance field reaches 10 m beyond the polygons (the raster margin)
+  double minX = 1e9, maxX = -1e9, minY = 1e9;
+  for (const Eigen::Vector2d& p : m.outline) {
+    minX = std::min(minX, p.x()), maxX = std::max(maxX, p.x()), minY = std::min(minY, p.y());
+  }
+  EXPECT_NEAR(minX, -3.0, 0.5);
+  EXPECT_NEAR(maxX, 3.0, 0.5);
+  EXPECT_NEAR(minY, 6.0, 0.5);
+  EXPECT_GT(m.confidence, 0.9);
+  // The street's boundary across the side street's mouth is open road, not a kerb in the wrong place.
+  for (const BoundaryStretch& s : judged(r, 1))
+    if (std::abs(s.line.front().y() - 5.0) < 0.01) EXPECT_NE(s.evidence, "no_road_inside");
+}
+
+}  // namespace
+}  // namespace hdprior
