@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/common_options.h"
 #include "app/option_checks.h"
+#include "engine/changes/map_change_report.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/ground_labels.h"
@@ -28,15 +29,23 @@ namespace {
 
 // What the analysis layers draw: the whole run with priors (over a given odometry file, as `run
 // --odometry`) and the batch solve, the file's own trajectory, and a keyframe's inspection and cost landscape.
+// The pipeline's analysis of the log; with checkMap, the map check along its final trajectory too.
 render::Analysis runAnalysis(const ArgoverseLog& log, const HdMap& map, const Config& config,
-                             const std::optional<size_t>& keyframe, const std::optional<GivenOdometry>& given) {
+                             const std::optional<size_t>& keyframe, const std::optional<GivenOdometry>& given,
+                             bool checkMap) {
   Session session(log, &map, config, {.givenOdometry = given});
   session.run();
   session.optimize();
   render::Analysis analysis = render::analysisOf(session);
   if (given) render::setFileTrajectory(analysis, log.cityTEgoAtSweeps(), givenOdometryInCity(*given, log), given->file);
   if (keyframe) render::inspect(analysis, session, map, *keyframe);
+  if (checkMap)
+    render::setMapChanges(analysis, detectMapChanges(log, map, render::finalTrajectory(analysis), config.roadPoints, ChangeOptions{}));
   return analysis;
+}
+
+bool hasLayer(const std::vector<std::string>& layers, const std::string& name) {
+  return std::find(layers.begin(), layers.end(), name) != layers.end();
 }
 
 bool anyNeedsAnalysis(const std::vector<std::string>& layers) {
@@ -105,7 +114,8 @@ int runSessionSnapshot(const SnapshotArguments& a) {
     throw Error(a.session, "frame " + std::to_string(s.frame) + " is out of range (the log has " + std::to_string(log.sweepCount()) + " sweeps)");
   const std::unique_ptr<HdMap> map = s.ran ? loadPriorMap(log, config)
                                            : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
-  render::Analysis analysis = s.ran ? runAnalysis(log, *map, config, s.keyframe, std::nullopt) : render::Analysis{};
+  render::Analysis analysis =
+      s.ran ? runAnalysis(log, *map, config, s.keyframe, std::nullopt, hasLayer(options.layers, "changes")) : render::Analysis{};
   if (s.comparison) {
     std::optional<size_t> frame;
     if (analysis.inspection) frame = analysis.inspection->frame;
@@ -150,15 +160,16 @@ int runSnapshot(const SnapshotArguments& a) {
     if (!a.frame) throw Error("option --ground-labels", "needs --frame (the sweep the labels are of)");
     options.groundLabels = readGroundLabels(a.groundLabels, log.sweep(*a.frame)->points.size());
     options.groundLabelsFrame = *a.frame;
-    if (std::find(options.layers.begin(), options.layers.end(), "ground_labels") == options.layers.end())
+    if (!hasLayer(options.layers, "ground_labels"))
       options.layers = render::parseLayerList(a.layers.empty() ? "drivable,boundary,ego,ground_labels" : a.layers + ",ground_labels");
   }
   const bool analysisNeeded = keyframe || anyNeedsAnalysis(options.layers);
-  const bool ndtCells = std::find(options.layers.begin(), options.layers.end(), "ndt_cells") != options.layers.end();
+  const bool ndtCells = hasLayer(options.layers, "ndt_cells");
   // The pipeline and the NDT cells need the matcher's map; the others load faster without it.
   const std::unique_ptr<HdMap> map = analysisNeeded || ndtCells ? loadPriorMap(log, config)
                                                                 : std::make_unique<HdMap>(HdMap::load(log.mapFiles(), render::renderMapOptions()));
-  render::Analysis analysis = analysisNeeded ? runAnalysis(log, *map, config, keyframe, given) : render::Analysis{};
+  render::Analysis analysis =
+      analysisNeeded ? runAnalysis(log, *map, config, keyframe, given, hasLayer(options.layers, "changes")) : render::Analysis{};
   const size_t frame = a.frame ? *a.frame : analysis.inspection->frame;
   render::Snapshotter snapshotter(log, *map, options);
   snapshotter.setAnalysis(std::move(analysis));

@@ -4,6 +4,8 @@
 #include <limits>
 #include <utility>
 
+#include "engine/changes/change_events.h"
+#include "engine/changes/map_change_report.h"
 #include "engine/error.h"
 #include "engine/pipeline/session.h"
 
@@ -32,6 +34,14 @@ std::vector<double> perSweep(std::vector<double> errors, const std::vector<Skipp
 }
 
 }  // namespace
+
+void setMapChanges(Analysis& analysis, MapChangeReport report) {
+  std::vector<RunEvent> run;
+  for (const RunEvent& e : analysis.events)
+    if (e.kind != RunEvent::Kind::MapChange) run.push_back(e);
+  analysis.events = mergedEvents(run, mapChangeEvents(report));
+  analysis.changes = std::make_shared<const MapChangeReport>(std::move(report));
+}
 
 Analysis analysisOf(const Session& session) {
   Analysis a;

@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 namespace hdprior {
 class HdMap;
 class Session;
+struct MapChangeReport;
 }
 
 namespace hdprior::render {
@@ -56,10 +58,15 @@ struct Analysis {
   std::optional<CostLandscape> landscape;              // around the inspection's match estimate
   std::optional<Comparison> comparison;                // run B, when the user compares
   std::optional<GroundMeasure> measure;                // the user's measurement, drawn by the measure layer
+  std::shared_ptr<const MapChangeReport> changes;      // the map check along the final trajectory (the changes layer)
 };
 
 // The trajectories, per-pose errors and keyframes of a session as it stands.
 Analysis analysisOf(const Session& session);
+// The trajectory a map check follows: the optimised one, else the odometry's.
+inline const PoseTrajectory& finalTrajectory(const Analysis& a) { return a.optimized.empty() ? a.odometry : a.optimized; }
+// The map check's report: kept for the changes layer, its events merged into the run's.
+void setMapChanges(Analysis& analysis, MapChangeReport report);
 // Run B's part of an analysis: its final trajectory with errors and its diagnostics.
 Comparison comparisonOf(const Session& session, std::string name);
 // Sets the trajectory file's name, its poses (city_T_ego at the sweeps) and their errors against `truth`.

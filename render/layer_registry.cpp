@@ -6,6 +6,7 @@
 
 #include "engine/error.h"
 #include "render/layers/accumulated_sweeps_layer.h"
+#include "render/layers/changes_layer.h"
 #include "render/layers/drivable_boundary_layer.h"
 #include "render/layers/drivable_raster_layer.h"
 #include "render/layers/ego_pose_layer.h"
@@ -60,6 +61,7 @@ const std::vector<Entry>& registry() {
       entry<LaneCenterlineLayer>(),
       entry<PedestrianCrossingLayer>(false),
       entry<NdtCellsLayer>(false),
+      analysisEntry<ChangesLayer>(),
       entry<TrajectoryLayer>(),
       trajectoryEntry(Which::Odometry, EstimatedTrajectoryLayer::kOdometryName),
       trajectoryEntry(Which::Optimized, EstimatedTrajectoryLayer::kOptimizedName),

@@ -103,7 +103,7 @@ bool AppState::goToEvent(int direction) {
   if (!next) return false;
   currentEvent = *next;
   const RunEvent& e = events[*next];
-  if (e.kind == RunEvent::Kind::SkippedSweep) goToFrame((long long)e.frame);
+  if (isFrameEvent(e.kind)) goToFrame((long long)e.frame);
   else inspectKeyframe(e.keyframe);
   return true;
 }

@@ -115,23 +115,13 @@ BoundaryReading readBoundary(const SurfaceEvidence& evidence, const BoundarySamp
       r.kind = BoundaryReading::Kind::Edge;
       r.offset = p.offset(last) + p.step / 2;
       describe(r, p, last);
+      // Inside the boundary the walk also stops at parked cars and gaps: only a kerb it saw counts.
+      if (r.offset < -options.tolerance && r.curbPoints < options.minSamples) return BoundaryReading{};
     }
     return r;
   }
-  // No road just inside: is there ground that is not road there, and where does road begin?
-  int offRoad = 0;
-  for (int i = p.half; i >= p.index(-1.5); --i) offRoad += p.ground(i) == Ground::OffRoad;
-  if (offRoad < 2) return r;
-  for (int i = p.index(-3.0); i >= 0; --i)
-    if (p.ground(i) == Ground::Road) {
-      r.kind = BoundaryReading::Kind::Edge;
-      r.offset = p.offset(i) + p.step / 2;
-      describe(r, p, i);
-      return r;
-    }
-  r.kind = BoundaryReading::Kind::NoRoad;
-  r.offset = -options.reach;
-  describe(r, p, p.half);
+  // No road just inside: the road walk may not have come this far (a cross street, the far side
+  // beyond parked cars), so nothing is read here.
   return r;
 }
 

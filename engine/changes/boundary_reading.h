@@ -13,10 +13,9 @@ struct BoundaryReading {
     Unobserved,  // too little seen on one side to place an edge
     Edge,        // the road ends at `offset` metres outwards of the map's boundary (negative: inwards)
     Open,        // the road goes on beyond the reach outwards: surface the map lacks
-    NoRoad,      // no road within the reach inwards, where the map says drivable
   };
   Kind kind = Kind::Unobserved;
-  double offset = 0.0;       // metres along the outward normal (Edge; ±reach for Open and NoRoad)
+  double offset = 0.0;       // metres along the outward normal (Edge; the reach for Open)
   int curbPoints = 0;        // kerb points the walks ended at, near the edge
   float groundOffset = NAN;  // mean lidar ground minus ground-height raster along the profile, metres
   int firstFrame = -1, bestFrame = -1;
@@ -24,7 +23,8 @@ struct BoundaryReading {
 
 // Reads the road's edge along the sample's normal in the evidence: walking outwards over road
 // cells from the road nearest inside the boundary to where road ends and is followed by ground
-// that is not road or by a kerb; or, with no road just inside, inwards to where road begins.
+// that is not road or by a kerb; or, with ground that is not road just inside, inwards to a kerb
+// where road begins.
 BoundaryReading readBoundary(const SurfaceEvidence& evidence, const BoundarySample& sample, const ChangeOptions& options);
 
 }  // namespace hdprior

@@ -25,13 +25,12 @@ struct Reading {
 };
 
 bool contradicts(const BoundaryReading& r, const ChangeOptions& o) {
-  return (r.kind == BoundaryReading::Kind::Edge && std::abs(r.offset) > o.tolerance) || r.kind == BoundaryReading::Kind::NoRoad;
+  return r.kind == BoundaryReading::Kind::Edge && std::abs(r.offset) > o.tolerance;
 }
 
 std::string evidenceOf(double offset, bool contradicted, const ChangeOptions& o) {
   if (!contradicted) return "kerb_offset";
-  if (offset <= -o.reach) return "no_road_inside";
-  return offset > 0 ? "road_beyond_boundary" : "no_road_inside";
+  return offset > 0 ? "road_beyond_boundary" : "kerb_inside";
 }
 
 BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1, const std::vector<Reading>& readings,

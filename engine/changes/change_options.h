@@ -6,12 +6,7 @@ namespace hdprior {
 struct ChangeOptions {
   double cell = 0.5;            // metres, of the evidence grid
   double frameSpacing = 2.0;    // metres of travel between the sweeps added
-  // Two neighbouring cells are one surface when their ground heights differ by less than this ...
-  double surfaceStep = 0.05;
-  // ... and their intensities by less than this share of the brighter (or surfaceIntensityFloor).
-  double surfaceIntensityShare = 0.3;
-  double surfaceIntensityFloor = 3.0;
-  int surfaceMinPoints = 2;     // ground points a cell needs (within SurfaceEvidence::surfaceRange) to describe its surface
+  int surfaceMinPoints = 2;     // ground points a cell needs for a surface
   double sampleSpacing = 1.0;   // metres between the samples of a boundary
   double stretchLength = 10.0;  // metres: a boundary's verdicts are given per stretch this long
   double reach = 6.0;           // metres: each sample looks this far along its normal, both ways
@@ -21,12 +16,12 @@ struct ChangeOptions {
   // Road going on farther than this beyond the boundary is surface the map lacks (a missing area),
   // not a boundary drawn in the wrong place.
   double openDepth = 4.0;
-  int minSamples = 3;              // a stretch needs this many observed samples for a verdict
+  int minSamples = 5;              // a stretch needs this many observed (contradicting) samples for a verdict
   double contradictedShare = 0.4;  // of its observed samples, for the stretch to be contradicted
   double seamDepth = 0.5;       // a sample this far inside the union of the polygons is a seam between two
   double missingGap = 1.0;      // road cells this far outside every polygon are candidates of a missing area ...
   double missingMinDepth = 3.0; // ... which must reach this far out ...
-  double missingMinArea = 10.0; // ... and cover this many square metres
+  double missingMinArea = 25.0; // ... and cover this many square metres
 };
 
 }  // namespace hdprior

@@ -83,8 +83,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   for (size_t k = 0; k < sweeps.size(); ++k) {
     if (cancel && cancel->load()) break;
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
-    const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k]);
-    evidence.add(int(sweeps[k]), *sweep, labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), cityTEgo, ground);
+    evidence.add(int(sweeps[k]), labelSweep(*log.sweep(sweeps[k]), levelRotation(cityTEgo), roadPoints), cityTEgo, ground);
     ++frames;
     if (progress) progress(k + 1, sweeps.size());
   }

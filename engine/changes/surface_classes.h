@@ -4,11 +4,11 @@
 
 namespace hdprior {
 
-// Sets each cell's Surface: from the cells the road walk reached, road grows over neighbouring
-// cells of the same surface (ground height within options.surfaceStep, intensity within
-// surfaceIntensityShare), so it covers the cross streets the walk never turned into; the cells
-// it refused (a kerb, a slope up, a brighter sidewalk or verge) and their surface up to
-// options.reach beyond are not road; the rest stays unknown.
+// Sets each cell's Surface from what the road walk made of the ground points seen there: road
+// where it reached most of them, not road where it saw them and reached none (it stops at kerbs
+// and gutters), unknown where it saw too few. Only the road the vehicle drove along is seen as
+// road this way: the walk does not turn into cross streets, so there ground that is not road is
+// no evidence by itself (readBoundary asks for a kerb).
 void classifySurface(SurfaceEvidence& evidence, const ChangeOptions& options);
 
 }  // namespace hdprior

@@ -32,8 +32,7 @@ SurfaceEvidence SurfaceEvidence::around(const std::vector<Eigen::Vector2d>& posi
   return SurfaceEvidence(g);
 }
 
-void SurfaceEvidence::add(int frame, const LidarSweep& raw, const LabelledSweep& sweep, const SE3& cityTEgo,
-                          const GroundHeight* ground) {
+void SurfaceEvidence::add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground) {
   // labelSweep levelled the points with the pose's roll and pitch; what is left is the yaw.
   const double yaw = yawOf(cityTEgo);
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(yaw).toRotationMatrix();
@@ -55,13 +54,8 @@ void SurfaceEvidence::add(int frame, const LidarSweep& raw, const LabelledSweep&
         addSaturating(cell.groundOffsetCount);
       }
     }
-    const float range = float(p.head<2>().norm());
-    if (range <= surfaceRange && cell.near < std::numeric_limits<uint16_t>::max()) {
-      ++cell.near;
-      cell.heightSum += float(p.z() + t.z());
-      cell.intensitySum += float(raw.points[i].intensity);
-    }
     if (cell.firstFrame < 0) cell.firstFrame = frame;
+    const float range = float(p.head<2>().norm());
     if (range < cell.bestRange) {
       cell.bestRange = range;
       cell.bestFrame = frame;

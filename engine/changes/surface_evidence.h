@@ -17,10 +17,6 @@ struct SurfaceCell {
   uint16_t road = 0;     // road points: the road walk reached them
   uint16_t offRoad = 0;  // ground points it did not reach (sidewalks, verges, or road it could not see into)
   uint16_t curb = 0;     // road points where the walk ended at a height step (kerbs)
-  // The ground points seen from close enough (SurfaceEvidence::surfaceRange) to describe the surface:
-  uint16_t near = 0;
-  float heightSum = 0;     // city z, metres
-  float intensitySum = 0;
   float groundOffsetSum = 0;  // of the ground points: height minus the ground-height raster, summed
   uint16_t groundOffsetCount = 0;
   int32_t firstFrame = -1;  // the first frame that saw the cell
@@ -28,15 +24,13 @@ struct SurfaceCell {
   float bestRange = 1e9f;   // metres from that frame's ego origin
 
   bool observed() const { return road + offRoad > 0; }
-  float height() const { return heightSum / float(near); }  // with near > 0
-  float intensity() const { return intensitySum / float(near); }
 };
 
 // A cell's surface as the change check reads it (classifySurface).
 enum class Surface : uint8_t {
-  Unknown,  // not seen, or seen only as a surface the road walk never touched nor bordered
-  Road,     // a smooth surface (height and brightness) the road walk reached
-  NotRoad,  // a surface beside the road across a height step or a change of brightness (sidewalk, verge, island)
+  Unknown,  // seen too little
+  Road,     // the road walk reached most of its ground points
+  NotRoad,  // ground the walk saw and did not reach (beyond a kerb or a gutter, or where it did not go)
 };
 
 // The lidar's ground evidence in city-frame cells over an area: every labelled sweep (ground
@@ -50,12 +44,7 @@ class SurfaceEvidence {
 
   // The labelled sweep of `frame` at city_T_ego (its points are levelled: labelSweep with the
   // pose's roll and pitch). `ground` gives each ground point's offset to the raster (may be null).
-  // `raw` is the sweep it was labelled from (its intensities).
-  void add(int frame, const LidarSweep& raw, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground);
-
-  // Ground points farther than this from the sensor describe the surface too coarsely (few rings,
-  // grazing incidence) and are counted, not measured.
-  static constexpr double surfaceRange = 25.0;
+  void add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground);
 
   const GridGeometry& geometry() const { return geometry_; }
   const std::vector<SurfaceCell>& cells() const { return cells_; }

@@ -44,6 +44,7 @@ const char* toString(RunEvent::Kind kind) {
     case RunEvent::Kind::ConstraintChange: return "constraint-change";
     case RunEvent::Kind::Beyond3Sigma: return "beyond-3-sigma";
     case RunEvent::Kind::SkippedSweep: return "skipped-sweep";
+    case RunEvent::Kind::MapChange: return "map-change";
   }
   return "?";
 }

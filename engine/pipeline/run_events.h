@@ -11,13 +11,19 @@ struct SkippedSweep;
 
 // A place in a run worth looking at, for the bench to jump to.
 struct RunEvent {
-  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep };
+  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep, MapChange };
   Kind kind = Kind::Rejected;
-  size_t keyframe = 0, frame = 0;  // frame: the log's sweep index; a skipped sweep's keyframe is the one before it
+  // frame: the log's sweep index; a skipped sweep's keyframe is the one before it; a map change's
+  // frame is the sweep that saw it best, its keyframe 0 (it belongs to no keyframe)
+  size_t keyframe = 0, frame = 0;
   std::string detail;              // the reason, "lateral + yaw -> full", "lateral 0.52 m > 3 x 0.12 m", the problem
 };
 
-// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep".
+// Whether the event is a place in the log (the bench goes to its frame) rather than a keyframe's
+// match (the bench inspects the keyframe).
+inline bool isFrameEvent(RunEvent::Kind kind) { return kind == RunEvent::Kind::SkippedSweep || kind == RunEvent::Kind::MapChange; }
+
+// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep", "map-change".
 const char* toString(RunEvent::Kind kind);
 
 // A run's events in frame order: rejected and gated priors, a change in what consecutive priors fix,

@@ -14,6 +14,7 @@ ImVec4 eventColor(RunEvent::Kind kind) {
     case RunEvent::Kind::Gated: return ImVec4(1.0f, 0.85f, 0.15f, 1.0f);
     case RunEvent::Kind::ConstraintChange: return ImVec4(0.3f, 0.65f, 1.0f, 1.0f);
     case RunEvent::Kind::Beyond3Sigma: return ImVec4(1.0f, 0.5f, 0.9f, 1.0f);
+    case RunEvent::Kind::MapChange: return ImVec4(1.0f, 0.3f, 1.0f, 1.0f);
     case RunEvent::Kind::SkippedSweep: break;
   }
   return ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
@@ -31,7 +32,7 @@ void drawEvents(AppState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, eventColor(e.kind));
     if (ImGui::Selectable(label.c_str(), state.currentEvent == i)) {
       state.currentEvent = i;
-      if (e.kind == RunEvent::Kind::SkippedSweep) state.goToFrame((long long)e.frame);
+      if (isFrameEvent(e.kind)) state.goToFrame((long long)e.frame);
       else state.inspectKeyframe(e.keyframe);
     }
     ImGui::PopStyleColor();

@@ -14,7 +14,7 @@ namespace {
 TEST(ChangeReportFiles, FeaturesCarryTheVerdictsAndTheSummaryCountsThem) {
   auto world = [](double x, double y) {
     test::GroundPoint g = test::straightStreet(x, y);
-    if (y > 0 && std::abs(x) < 3.0) g.road = true;
+    if (y > 0 && std::abs(x) < 3.0) g = {true, true, false};
     return g;
   };
   const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 3)});

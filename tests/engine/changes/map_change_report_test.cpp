@@ -1,6 +1,6 @@
 // The change check on a made-up street: what agrees with the map is consistent, a boundary
-// drawn in the wrong place is contradicted by as much as it is off, a drivable area over the
-// sidewalk is contradicted, and road the map lacks is a missing surface.
+// drawn in the wrong place is contradicted by as much as it is off (inside only where the walk saw
+// the kerb), and road the map lacks is a missing surface.
 #include "engine/changes/map_change_report.h"
 
 #include <gtest/gtest.h>
@@ -56,25 +56,37 @@ TEST(MapChangeReport, ABoundaryDrawnTwoMetresInsideTheKerbIsContradictedByTwoMet
   EXPECT_TRUE(r.missing.empty()) << "2 m is a boundary drawn wrong, not a missing surface";
 }
 
-TEST(MapChangeReport, ADrivableAreaOverTheSidewalkIsContradicted) {
-  // Polygon 2 paints 8 m of sidewalk as drivable beside the street.
-  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5), test::rectangle(-4, 4, 4, 13)});
+TEST(MapChangeReport, ABoundaryDrawnTwoMetresOutsideTheKerbIsContradictedWhereTheWalkSawTheKerb) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 7)});
   const MapChangeReport r = judgeMapChanges(test::streetEvidence(test::straightStreet), map, ChangeOptions{});
-  const std::vector<BoundaryStretch> added = judged(r, 2);
-  ASSERT_FALSE(added.empty());
-  int against = 0;
-  for (const BoundaryStretch& s : added) against += s.verdict == MapVerdict::Contradicted;
-  EXPECT_GE(against, 1);
-  EXPECT_EQ(r.drivableAreas[1].verdict, MapVerdict::Contradicted);
-  for (const BoundaryStretch& s : added)
-    if (s.verdict == MapVerdict::Contradicted) EXPECT_EQ(s.evidence, "no_road_inside");
+  int contradicted = 0;
+  for (const BoundaryStretch& s : judged(r, 1))
+    if (std::abs(s.line.front().y() - 7.0) < 0.01) {
+      ++contradicted;
+      EXPECT_EQ(s.verdict, MapVerdict::Contradicted) << "stretch " << s.index;
+      EXPECT_NEAR(s.offset, -2.0, 0.3);
+      EXPECT_EQ(s.evidence, "kerb_inside");
+    }
+  EXPECT_GE(contradicted, 3);
+}
+
+TEST(MapChangeReport, WhereTheWalkStoppedShortOfTheBoundaryWithoutAKerbNothingIsRead) {
+  // The walk ends 2 m inside the map's boundary with no kerb there (a parked car, a gap): no verdict.
+  auto world = [](double x, double y) {
+    test::GroundPoint g = test::straightStreet(x, y);
+    if (y > 3.0) g.walked = g.kerb = false;
+    return g;
+  };
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(world), test::streetMap({test::rectangle(-100, -5, 100, 5)}),
+                                            ChangeOptions{});
+  for (const BoundaryStretch& s : judged(r, 1)) EXPECT_NE(s.verdict, MapVerdict::Contradicted) << "stretch " << s.index;
 }
 
 TEST(MapChangeReport, RoadTheMapLacksIsAMissingSurfaceWithItsOutline) {
   // A side street 6 m wide leaves northwards at x in [-3, 3]; the map has only the street.
   auto world = [](double x, double y) {
     test::GroundPoint g = test::straightStreet(x, y);
-    if (y > 0 && std::abs(x) < 3.0) g.road = true;
+    if (y > 0 && std::abs(x) < 3.0) g = {true, true, false};
     return g;
   };
   const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
@@ -94,7 +106,7 @@ TEST(MapChangeReport, RoadTheMapLacksIsAMissingSurfaceWithItsOutline) {
   EXPECT_GT(m.confidence, 0.9);
   // The street's boundary across the side street's mouth is open road, not a kerb in the wrong place.
   for (const BoundaryStretch& s : judged(r, 1))
-    if (std::abs(s.line.front().y() - 5.0) < 0.01) EXPECT_NE(s.evidence, "no_road_inside");
+    if (std::abs(s.line.front().y() - 5.0) < 0.01) EXPECT_NE(s.evidence, "kerb_inside");
 }
 
 }  // namespace

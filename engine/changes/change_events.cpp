@@ -1,0 +1,52 @@
+#include "engine/changes/change_events.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace hdprior {
+
+namespace {
+
+std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryStretch>& stretches) {
+  // The most confident contradicted stretch says what the lidar saw; the count says how far it goes.
+  const BoundaryStretch* best = nullptr;
+  int count = 0;
+  for (const BoundaryStretch& s : stretches) {
+    if (s.areaId != v.id || s.verdict != MapVerdict::Contradicted) continue;
+    ++count;
+    if (!best || s.confidence > best->confidence) best = &s;
+  }
+  char b[200];
+  if (!best) return "";
+  std::snprintf(b, sizeof b, "drivable area %lld: kerb %.1f m %s its boundary, %d stretch%s (confidence %.2f)", (long long)v.id,
+                  std::abs(best->offset), best->offset > 0 ? "outside" : "inside", count, count == 1 ? "" : "es", v.confidence);
+  return b;
+}
+
+}  // namespace
+
+std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
+  std::vector<RunEvent> events;
+  for (const DrivableAreaVerdict& v : report.drivableAreas)
+    if (v.verdict == MapVerdict::Contradicted && v.bestFrame >= 0)
+      events.push_back({RunEvent::Kind::MapChange, 0, size_t(v.bestFrame), areaDetail(v, report.stretches)});
+  for (const MissingSurface& m : report.missing) {
+    if (m.bestFrame < 0) continue;
+    char b[160];
+    std::snprintf(b, sizeof b, "missing road surface %.0f m2, %.1f m beyond the map (confidence %.2f)", m.area, m.depth,
+                  m.confidence);
+    events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
+  }
+  std::stable_sort(events.begin(), events.end(), [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });
+  return events;
+}
+
+std::vector<RunEvent> mergedEvents(const std::vector<RunEvent>& run, const std::vector<RunEvent>& changes) {
+  std::vector<RunEvent> out;
+  std::merge(run.begin(), run.end(), changes.begin(), changes.end(), std::back_inserter(out),
+             [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });
+  return out;
+}
+
+}  // namespace hdprior

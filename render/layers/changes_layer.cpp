@@ -1,0 +1,95 @@
+#include "render/layers/changes_layer.h"
+
+#include <vector>
+
+#include "engine/changes/map_change_report.h"
+#include "render/analysis.h"
+#include "render/layers/analysis_drawing.h"
+#include "render/layers/layer_drawing.h"
+#include "render/scene.h"
+
+namespace hdprior::render {
+namespace {
+
+constexpr float kLift = 0.06f;  // metres above the ground, over the map's own layers
+
+std::vector<Eigen::Vector3f> onGround(const Scene& scene, const std::vector<Eigen::Vector2d>& line, bool closed) {
+  std::vector<Eigen::Vector3f> out;
+  for (const Eigen::Vector2d& p : line) out.push_back(scene.local({p.x(), p.y(), scene.groundZ(p, scene.origin.z()) + kLift}));
+  if (closed && !out.empty()) out.push_back(out.front());
+  return out;
+}
+
+// A quad per cell the lidar saw as road or as beside the road.
+std::vector<ColoredVertex> surfaceCells(const Scene& scene, const SurfaceEvidence& e, const Eigen::Vector4f& road,
+                                        const Eigen::Vector4f& notRoad) {
+  std::vector<ColoredVertex> v;
+  const GridGeometry& g = e.geometry();
+  const float h = float(g.resolution) / 2;
+  for (int r = 0; r < g.rows; ++r)
+    for (int c = 0; c < g.cols; ++c) {
+      const Surface s = e.surface(g.index(c, r));
+      if (s == Surface::Unknown) continue;
+      const Eigen::Vector2d centre = g.cellCentre(c, r);
+      const Eigen::Vector3f m = scene.local({centre.x(), centre.y(), scene.groundZ(centre, scene.origin.z()) + 0.02});
+      const Eigen::Vector4f& colour = s == Surface::Road ? road : notRoad;
+      const Eigen::Vector3f corners[4] = {m + Eigen::Vector3f(-h, -h, 0), m + Eigen::Vector3f(h, -h, 0),
+                                          m + Eigen::Vector3f(h, h, 0), m + Eigen::Vector3f(-h, h, 0)};
+      for (int i : {0, 1, 2, 0, 2, 3}) v.push_back({corners[i], colour});
+    }
+  return v;
+}
+
+}  // namespace
+
+void ChangesLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
+  analysis_ = &analysis;
+  build(scene);
+}
+
+void ChangesLayer::build(const Scene& scene) {
+  Strokes strokes;
+  std::vector<ColoredVertex> cells;
+  if (analysis_ && analysis_->changes) {
+    const MapChangeReport& report = *analysis_->changes;
+    for (const BoundaryStretch& s : report.stretches) {
+      if (s.samples == 0) continue;
+      if (s.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, s.line, false), 0.6f, contradicted_);
+      else if (s.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, s.line, false), 0.25f, consistent_);
+      else if (show_ == 2) strokes.polyline(onGround(scene, s.line, false), 0.15f, unobserved_);
+    }
+    for (const MissingSurface& m : report.missing) strokes.polyline(onGround(scene, m.outline, true), 0.45f, missing_);
+    if (show_ >= 1) cells = surfaceCells(scene, report.evidence, road_, notRoad_);
+  }
+  strokes_.upload(strokes, {});
+  surface_ = std::make_unique<GpuMesh>();
+  surface_->upload(std::span<const ColoredVertex>(cells));
+}
+
+void ChangesLayer::draw(const DrawContext& context) const {
+  if (surface_) drawColored(context, *surface_, Primitive::Triangles);
+  strokes_.draw(context, 1.0f);
+}
+
+std::vector<MarkerKey> ChangesLayer::markerKeys() const {
+  if (!analysis_ || !analysis_->changes) return {};
+  std::vector<MarkerKey> keys = {{"contradicted", contradicted_}, {"consistent", consistent_}, {"missing surface", missing_}};
+  if (show_ >= 1) {
+    keys.push_back({"lidar: road", road_});
+    keys.push_back({"lidar: beside the road", notRoad_});
+  }
+  if (show_ == 2) keys.push_back({"unobserved", unobserved_});
+  return keys;
+}
+
+std::vector<LayerOption> ChangesLayer::options() {
+  std::vector<LayerOption> o = {
+      LayerOption::choice("show", &show_, {"verdicts", "verdicts and lidar surface", "everything"}, true)};
+  for (auto [label, color] : {std::pair{"contradicted", &contradicted_}, {"consistent", &consistent_}, {"missing", &missing_}}) {
+    o.push_back(LayerOption::colorPicker(label, color));
+    o.back().rebuilds = true;
+  }
+  return o;
+}
+
+}  // namespace hdprior::render

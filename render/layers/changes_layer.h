@@ -1,0 +1,34 @@
+#pragma once
+#include <memory>
+
+#include "render/gpu_mesh.h"
+#include "render/layer.h"
+#include "render/layers/stroke_meshes.h"
+
+namespace hdprior::render {
+
+// The map check (Analysis::changes): each drivable area's boundary stretches coloured by verdict
+// (contradicted thick, consistent thin, unobserved faint), the missing surfaces' outlines, and
+// optionally what the lidar saw as road and beside the road under them.
+class ChangesLayer : public Layer {
+ public:
+  static constexpr const char* kName = "changes";
+  std::string name() const override { return kName; }
+  void setAnalysis(const Scene& scene, const Analysis& analysis) override;
+  void draw(const DrawContext& context) const override;
+  std::vector<LayerOption> options() override;
+  std::vector<MarkerKey> markerKeys() const override;
+
+ private:
+  void build(const Scene& scene);
+
+  const Analysis* analysis_ = nullptr;
+  StrokeMeshes strokes_;
+  std::unique_ptr<GpuMesh> surface_;
+  int show_ = 1;  // 0: verdicts, 1: verdicts and the lidar's surface, 2: also the unobserved stretches
+  Eigen::Vector4f contradicted_{1.0f, 0.15f, 0.15f, 1.0f}, consistent_{0.25f, 0.95f, 0.35f, 1.0f},
+      unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, missing_{1.0f, 0.2f, 1.0f, 1.0f};
+  Eigen::Vector4f road_{0.55f, 0.55f, 0.6f, 0.45f}, notRoad_{0.2f, 0.55f, 0.25f, 0.45f};
+};
+
+}  // namespace hdprior::render
