@@ -35,12 +35,16 @@ std::vector<double> perSweep(std::vector<double> errors, const std::vector<Skipp
 
 }  // namespace
 
-void setMapChanges(Analysis& analysis, MapChangeReport report) {
+void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report) {
   std::vector<RunEvent> run;
   for (const RunEvent& e : analysis.events)
     if (e.kind != RunEvent::Kind::MapChange) run.push_back(e);
-  analysis.events = mergedEvents(run, mapChangeEvents(report));
-  analysis.changes = std::make_shared<const MapChangeReport>(std::move(report));
+  analysis.events = mergedEvents(run, mapChangeEvents(*report));
+  analysis.changes = std::move(report);
+}
+
+void setMapChanges(Analysis& analysis, MapChangeReport report) {
+  setMapChanges(analysis, std::make_shared<const MapChangeReport>(std::move(report)));
 }
 
 Analysis analysisOf(const Session& session) {

@@ -66,6 +66,7 @@ Analysis analysisOf(const Session& session);
 // The trajectory a map check follows: the optimised one, else the odometry's.
 inline const PoseTrajectory& finalTrajectory(const Analysis& a) { return a.optimized.empty() ? a.odometry : a.optimized; }
 // The map check's report: kept for the changes layer, its events merged into the run's.
+void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report);
 void setMapChanges(Analysis& analysis, MapChangeReport report);
 // Run B's part of an analysis: its final trajectory with errors and its diagnostics.
 Comparison comparisonOf(const Session& session, std::string name);

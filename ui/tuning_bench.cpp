@@ -97,10 +97,25 @@ std::string comparisonReport(TuningBench& bench) {
   return line;
 }
 
+// The map check's counts, when it has run.
+std::string mapCheckReport(const render::Analysis& a) {
+  if (!a.changes) return "";
+  size_t contradicted = 0, consistent = 0;
+  for (const DrivableAreaVerdict& v : a.changes->drivableAreas) {
+    contradicted += v.verdict == MapVerdict::Contradicted;
+    consistent += v.verdict == MapVerdict::Consistent;
+  }
+  char line[200];
+  std::snprintf(line, sizeof line, "map check: %zu drivable areas contradicted, %zu consistent, %zu missing surfaces, %.3f km of boundary observed\n",
+                contradicted, consistent, a.changes->missing.size(), a.changes->observedBoundaryKm);
+  return line;
+}
+
 }  // namespace
 
 std::string benchReport(TuningBench& bench) {
-  return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench) + comparisonReport(bench);
+  return sessionReport(bench, bench.runner().session()) + odometryFileReport(bench) + comparisonReport(bench) +
+         mapCheckReport(bench.analysis());
 }
 
 std::string odometrySourceText(const Session& session) {
@@ -167,6 +182,7 @@ PipelineOptions TuningBench::pipelineOptions() const {
 
 bool TuningBench::poll() {
   pollLandscape();
+  pollMapCheck();
   if (comparison_.poll()) showComparison();
   if (runner_.poll()) {
     refresh();
@@ -189,6 +205,7 @@ void TuningBench::refresh() {
   analysis_.landscape = std::move(previous.landscape);
   analysis_.comparison = std::move(previous.comparison);
   analysis_.measure = previous.measure;
+  if (previous.changes) render::setMapChanges(analysis_, previous.changes);
   summary_.reset();
   if (session->done()) {
     try {
@@ -246,6 +263,7 @@ void TuningBench::waitForLandscape() {
 
 void TuningBench::run() {
   if (runner_.busy()) return;
+  mapCheckJob_ = {};  // waits for a map check of the old run, which reads the map a new run may replace
   runner_.restart(config, pipelineOptions());
   runner_.run();
   selected_.reset();
@@ -258,6 +276,35 @@ void TuningBench::run() {
   showOdometryFile();
   ++landscapeGeneration_;  // a landscape still being computed belongs to the old session
   changed_ = true;
+}
+
+bool TuningBench::checkMap() {
+  const Session* session = runner_.session();
+  if (runner_.busy() || mapCheckPending() || !session || !session->done() || !runner_.map()) {
+    message = "the map check needs a finished run";
+    return false;
+  }
+  const HdMap* map = runner_.map();
+  auto job = [this, map, poses = render::finalTrajectory(analysis_), roadPoints = config.roadPoints] {
+    return detectMapChanges(log_, *map, poses, roadPoints, ChangeOptions{});
+  };
+  mapCheckJob_ = std::async(std::launch::async, std::move(job));
+  return true;
+}
+
+void TuningBench::pollMapCheck() {
+  if (!mapCheckJob_.valid() || mapCheckJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    render::setMapChanges(analysis_, mapCheckJob_.get());
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  changed_ = true;
+}
+
+void TuningBench::waitForMapCheck() {
+  if (mapCheckJob_.valid()) mapCheckJob_.wait();
+  pollMapCheck();
 }
 
 void TuningBench::stepKeyframe() {

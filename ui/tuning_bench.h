@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "engine/changes/map_change_report.h"
 #include "engine/match/cost_landscape.h"
 #include "engine/pipeline/config.h"
 #include "engine/pipeline/keyframe_inspection.h"
@@ -88,6 +89,12 @@ class TuningBench {
   ComparisonRunner& comparison() { return comparison_; }
   // The user's measurement (none: cleared), drawn by the measure layer.
   void setMeasure(std::optional<GroundMeasure> measure);
+  // The map check (hdprior changes) along the run's final trajectory, in the background; when it
+  // ends its report joins the analysis (the changes layer, map-change events) until the next run.
+  // False (message says why) without a finished run.
+  bool checkMap();
+  bool mapCheckPending() const { return mapCheckJob_.valid(); }
+  void waitForMapCheck();  // blocks until the map check has joined the analysis (scripts, tests)
   // Run A's figures for the comparison table, once its run has ended.
   const std::optional<RunSummary>& summary() const { return summary_; }
 
@@ -115,6 +122,7 @@ class TuningBench {
   void showOdometryFile();
   void requestLandscape(LandscapeRequest request);
   void pollLandscape();
+  void pollMapCheck();
 
   const ArgoverseLog& log_;
   SessionRunner runner_;
@@ -126,6 +134,7 @@ class TuningBench {
   bool selectNewest_ = false;
   // Declared after runner_: destroyed (waited for) before the map it reads.
   std::future<LandscapeResult> landscapeJob_;
+  std::future<MapChangeReport> mapCheckJob_;
   std::optional<LandscapeRequest> pendingLandscape_;
   size_t landscapeGeneration_ = 0, landscapeJobGeneration_ = 0;
 };

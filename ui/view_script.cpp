@@ -51,7 +51,7 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
   static const std::map<std::string, std::pair<size_t, size_t>> arity = {
       {"frame", {1, 1}}, {"step", {1, 1}}, {"play", {1, 1}}, {"pause", {0, 0}}, {"view", {1, 1}}, {"layer", {2, 2}},
       {"opacity", {2, 2}}, {"wait", {1, 1}}, {"screenshot", {1, 1}}, {"exit", {0, 0}}, {"run", {0, 0}},
-      {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"offset", {3, 3}},
+      {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"check-map", {0, 0}}, {"offset", {3, 3}},
       {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}, {"plot", {2, 2}},
       {"events", {0, 0}}, {"next-event", {0, 0}}, {"prev-event", {0, 0}}, {"bookmark", {1, 64}}, {"compare", {1, 1}},
       {"measure", {1, 4}}, {"pick", {2, 2}}, {"save-session", {1, 1}}, {"load-session", {1, 1}}};

@@ -155,6 +155,10 @@ bool Viewer::runBenchCommand(const ScriptCommand& c) {
   } else if (c.verb == "optimize") {
     bench.optimize();
     finish();
+  } else if (c.verb == "check-map") {
+    if (!bench.checkMap()) throw Error("script line " + std::to_string(c.line), bench.message + ": 'run' first");
+    bench.waitForMapCheck();
+    state_->pollBench();
   } else if (c.verb == "keyframe" || c.verb == "match") {
     if (bench.keyframeCount() == 0) throw Error("script line " + std::to_string(c.line), "no keyframes yet: 'run' or 'step-keyframe' first");
     if (c.verb == "keyframe") state_->inspectKeyframe(std::min<size_t>(std::stoull(c.args[0]), bench.keyframeCount() - 1));

@@ -30,6 +30,12 @@ void drawRunControls(AppState& state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("the session to its next keyframe: odometry, match, prior, incremental solve");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) bench.reset();
+  ImGui::SameLine();
+  if (bench.mapCheckPending()) ImGui::TextDisabled("checking the map ...");
+  else if (ImGui::Button("Check map")) bench.checkMap();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("after a run: the lidar's road against the map's drivable area along the final trajectory "
+                      "(hdprior changes): the changes layer and map-change events");
   if (!runner.lastJob().empty()) ImGui::TextWrapped("%s", runner.lastJob().c_str());
   if (!runner.error().empty()) ImGui::TextColored(kErrorColor, "%s", runner.error().c_str());
 }
