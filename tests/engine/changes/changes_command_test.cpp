@@ -9,9 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
-#include "engine/io/vector_map.h"
+#include "narrowed_street.h"
 #include "test_data.h"
 
 namespace hdprior {
@@ -19,15 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 
 nlohmann::json summaryOf(const fs::path& dir) { return nlohmann::json::parse(test::readFileText(dir / "summary.json")); }
-
-bool inside(const Polyline3& polygon, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Eigen::Vector3d &a = polygon[i], &b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) in = !in;
-  }
-  return in;
-}
 
 class ChangesCommand : public ::testing::Test {
  protected:
@@ -58,29 +48,18 @@ TEST_F(ChangesCommand, OverItsOwnMapNothingIsContradicted) {
   EXPECT_FALSE(geo["features"].empty());
 }
 
-// The polygon under the first pose loses 2.5 m on its side to the left of the vehicle: where the
-// lidar sees that side's kerb, the road goes on beyond the map's boundary.
+// The street under the first pose drawn 2.5 m narrower on its left: where the lidar sees that
+// side's kerb, the road goes on beyond the map's boundary.
 TEST_F(ChangesCommand, AStreetTheMapDrawsNarrowerIsContradicted) {
   const fs::path log = test::copySharedTownDrive(1, 7, 8.0, drive_->folder / "narrowed");
-  const ArgoverseLog opened(log);
-  const fs::path mapFile = opened.mapFiles().vectorMap;
-  VectorMap map = readVectorMap(mapFile);
-  const SE3 first = opened.cityTEgoAtSweeps().poses().front();
-  const Eigen::Vector2d ego = first.translation().head<2>(), left = first.linear().col(1).head<2>().normalized();
-  auto area = std::find_if(map.drivableAreas.begin(), map.drivableAreas.end(),
-                           [&](const DrivableArea& a) { return inside(a.areaBoundary, ego); });
-  ASSERT_NE(area, map.drivableAreas.end());
-  // Vertices on the left of the vehicle (more than 1 m) move 2.5 m towards its line.
-  for (Eigen::Vector3d& v : area->areaBoundary)
-    if ((v.head<2>() - ego).dot(left) > 1.0) v.head<2>() -= 2.5 * left;
-  writeFileAtomically(mapFile, vectorMapToJson(map));
+  const int64_t narrowed = test::narrowStreetAtStart(log, 2.5);
   const fs::path out = drive_->folder / "narrowed_out";
   const test::CommandResult r = test::runHdprior("changes " + test::quoted(log) + " --run " +
                                                  test::quoted(drive_->folder / "run") + " --out " + test::quoted(out));
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json s = summaryOf(out);
   const auto& ids = s["contradicted_drivable_areas"];
-  EXPECT_NE(std::find(ids.begin(), ids.end(), area->id), ids.end()) << s.dump();
+  EXPECT_NE(std::find(ids.begin(), ids.end(), narrowed), ids.end()) << s.dump();
 }
 
 TEST_F(ChangesCommand, BadInputIsOneLineAndNothingIsWritten) {
