@@ -10,6 +10,8 @@
 #include "engine/changes/change_report_files.h"
 #include "engine/changes/map_change_report.h"
 #include "engine/error.h"
+#include "engine/eval/change_scoring.h"
+#include "engine/io/file_bytes.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/tum_trajectory.h"
 #include "engine/map/hd_map.h"
@@ -48,6 +50,15 @@ int runChanges(const ChangesArguments& a) {
   const MapChangeReport report =
       detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{}, [&](size_t d, size_t t) { bar(d, t); });
   writeChangeReport(out, report, log.id());
+  std::string scored;
+  if (const std::filesystem::path labels = log.dir() / "map_change.json"; std::filesystem::exists(labels)) {
+    const ChangeScore score = scoreMapChanges(report, readMapChangeLabels(labels));
+    writeFileAtomically(out / "score.json", changeScoreJson(score));
+    char b[200];
+    std::snprintf(b, sizeof b, "; against map_change.json: %zu of %zu reports near a change, %zu of %zu changes found", score.reportsNearChange,
+                  score.reports, score.changesFound, score.changes);
+    scored = b;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t contradicted = 0, consistent = 0;
   for (const DrivableAreaVerdict& v : report.drivableAreas) {
@@ -55,9 +66,10 @@ int runChanges(const ChangesArguments& a) {
     consistent += v.verdict == MapVerdict::Consistent;
   }
   std::printf("changes %s: %zu sweeps over %.2f km, %.2f km of boundary observed; drivable areas: %zu contradicted, "
-              "%zu consistent, %zu unobserved; %zu missing surfaces; %.1f s; wrote %s\n",
+              "%zu consistent, %zu unobserved; %zu missing surfaces%s; %.1f s; wrote %s\n",
               log.id().c_str(), report.frames, report.drivenKm, report.observedBoundaryKm, contradicted, consistent,
-              report.drivableAreas.size() - contradicted - consistent, report.missing.size(), seconds, out.string().c_str());
+              report.drivableAreas.size() - contradicted - consistent, report.missing.size(), scored.c_str(), seconds,
+              out.string().c_str());
   return 0;
 }
 
@@ -66,7 +78,8 @@ int runChanges(const ChangesArguments& a) {
 Command addChangesCommand(CLI::App& hdprior) {
   CLI::App* command = hdprior.add_subcommand(
       "changes", "where the lidar contradicts the HD map: a verdict per drivable-area boundary stretch and the road "
-                 "surface the map lacks, along a run's globally consistent poses; changes.geojson and summary.json into DIR");
+                 "surface the map lacks, along a run's globally consistent poses; changes.geojson and summary.json into DIR "
+                 "(and score.json against a simulated log's map_change.json)");
   auto a = std::make_shared<ChangesArguments>();
   addLogArgument(*command, a->log);
   command->add_option("--out", a->out, "the output folder")->type_name("DIR")->required();

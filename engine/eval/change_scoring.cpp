@@ -1,0 +1,128 @@
+#include "engine/eval/change_scoring.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+namespace hdprior {
+
+namespace {
+
+using Line = std::vector<Eigen::Vector2d>;
+
+double pointSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * d - p).norm();
+}
+
+// The segments of a line (closed: back to its first point).
+std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments(const Line& line, bool closed) {
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> out;
+  for (size_t i = 0; i + 1 < line.size(); ++i) out.emplace_back(line[i], line[i + 1]);
+  if (closed && line.size() > 2) out.emplace_back(line.back(), line.front());
+  if (line.size() == 1) out.emplace_back(line[0], line[0]);
+  return out;
+}
+
+bool inside(const Line& polygon, const Eigen::Vector2d& p) {
+  bool in = false;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Eigen::Vector2d &a = polygon[i], &b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) in = !in;
+  }
+  return in;
+}
+
+// The nearest distance between two lines, 0 where a point of one lies inside the other (a polygon).
+double distance(const Line& a, bool aClosed, const Line& b, bool bClosed) {
+  if (aClosed && b.size() > 0 && inside(a, b.front())) return 0.0;
+  if (bClosed && a.size() > 0 && inside(b, a.front())) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [p, q] : segments(a, aClosed))
+    for (const auto& [r, s] : segments(b, bClosed))
+      best = std::min({best, pointSegment(p, r, s), pointSegment(q, r, s), pointSegment(r, p, q), pointSegment(s, p, q)});
+  return best;
+}
+
+struct Place {
+  Line line;
+  bool closed = false;
+};
+
+// Where each report lies: a contradicted area's contradicted stretches, a missing surface's outline.
+std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report) {
+  std::vector<std::vector<Place>> out;
+  for (const DrivableAreaVerdict& v : report.drivableAreas) {
+    if (v.verdict != MapVerdict::Contradicted) continue;
+    std::vector<Place> places;
+    for (const BoundaryStretch& s : report.stretches)
+      if (s.areaId == v.id && s.verdict == MapVerdict::Contradicted) places.push_back({s.line, false});
+    out.push_back(std::move(places));
+  }
+  for (const MissingSurface& m : report.missing) out.push_back({{m.outline, true}});
+  return out;
+}
+
+std::vector<Place> labelPlaces(const MapChangeLabel& l) {
+  std::vector<Place> out;
+  const bool stretch = l.change == "narrowed" || l.change == "kerb_moved";
+  for (const Line& line : l.places) out.push_back({line, !stretch});
+  return out;
+}
+
+bool near(const std::vector<Place>& a, const std::vector<Place>& b, double match) {
+  for (const Place& p : a)
+    for (const Place& q : b)
+      if (distance(p.line, p.closed, q.line, q.closed) <= match) return true;
+  return false;
+}
+
+}  // namespace
+
+std::string changeScoreJson(const ChangeScore& s) {
+  const auto value = [](double v) { return std::isfinite(v) ? nlohmann::json(std::round(v * 1e4) / 1e4) : nlohmann::json(nullptr); };
+  return nlohmann::json{{"reports", s.reports},
+                        {"reports_near_change", s.reportsNearChange},
+                        {"precision", value(s.precision())},
+                        {"changes", s.changes},
+                        {"changes_found", s.changesFound},
+                        {"recall", value(s.recall())},
+                        {"driven_km", value(s.drivenKm)},
+                        {"false_alarms_per_km", value(s.drivenKm > 0 ? double(s.falseAlarms()) / s.drivenKm : NAN)}}
+             .dump(2) +
+         "\n";
+}
+
+ChangeScore& ChangeScore::operator+=(const ChangeScore& o) {
+  reports += o.reports, reportsNearChange += o.reportsNearChange;
+  changes += o.changes, changesFound += o.changesFound;
+  drivenKm += o.drivenKm;
+  return *this;
+}
+
+ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, double nearRoute,
+                            double match) {
+  ChangeScore score;
+  score.drivenKm = report.drivenKm;
+  std::vector<std::vector<Place>> changed;
+  std::vector<bool> passed;
+  for (const MapChangeLabel& l : labels) {
+    if (l.element != "drivable_area") continue;
+    changed.push_back(labelPlaces(l));
+    passed.push_back(l.routeDistance <= nearRoute);
+  }
+  const std::vector<std::vector<Place>> reports = reportPlaces(report);
+  score.reports = reports.size();
+  for (const std::vector<Place>& r : reports)
+    score.reportsNearChange += std::any_of(changed.begin(), changed.end(), [&](const auto& c) { return near(r, c, match); });
+  for (size_t i = 0; i < changed.size(); ++i) {
+    if (!passed[i]) continue;
+    ++score.changes;
+    score.changesFound += std::any_of(reports.begin(), reports.end(), [&](const auto& r) { return near(r, changed[i], match); });
+  }
+  return score;
+}
+
+}  // namespace hdprior

@@ -1,0 +1,26 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hdprior {
+
+// One labelled difference between a simulated log's written map and its world (map_change.json,
+// docs/formats.md): what changed and where it lies.
+struct MapChangeLabel {
+  std::string element;  // "drivable_area" or "pedestrian_crossing"
+  std::string change;   // "removed", "shifted", "added", "narrowed", "kerb_moved", "crosswalk_inserted", "crosswalk_deleted"
+  int64_t id = 0;
+  // Where it differs: the changed stretch when there is one, else the world's and the map's outlines.
+  std::vector<std::vector<Eigen::Vector2d>> places;
+  double routeDistance = 0.0;  // metres from the drive
+};
+
+// Reads map_change.json; throws Error naming the file for a missing or mistyped member.
+std::vector<MapChangeLabel> readMapChangeLabels(const std::filesystem::path& file);
+std::vector<MapChangeLabel> parseMapChangeLabels(const std::string& json, const std::string& source);
+
+}  // namespace hdprior
