@@ -26,6 +26,7 @@ struct SimulationOptions {
   SimTrajectory trajectory = SimTrajectory::Route;
   SweepNoise noise;
   double mapChange = 0.0;               // fraction of drivable polygons changed in the written map
+  std::optional<double> mapChangeWithin;  // changes only where an outline is this near the drive (metres)
   std::optional<SceneFamily> family;    // the scene varied by drawSceneVariation(family, seed); it
                                         // sets town, scene (parked included) and lidar errors
   int threads = 2;
