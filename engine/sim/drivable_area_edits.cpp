@@ -48,8 +48,7 @@ std::optional<MapChange> added(const Ring2& ring, const DrivableArea& area, Edit
   for (size_t k = 0; k < n; ++k)
     if (nearDrive(c, std::span(&ring[k], 1), false)) vertices.push_back(k);
   std::shuffle(vertices.begin(), vertices.end(), c.rng);
-  for (size_t t = 0; t < std::min<size_t>(vertices.size(), 12); ++t) {
-    const size_t k = vertices[t];
+  for (const size_t k : vertices) {
     const Vec2 base = ring[k];
     const Vec2 bisector = -orientation * (leftNormal(ring[(k + n - 1) % n], base) + leftNormal(base, ring[(k + 1) % n]));
     if (bisector.norm() < 1e-6) continue;
