@@ -54,7 +54,7 @@ std::vector<RingSide> ringSides(const Ring2& ring, double cornerDegrees) {
   }
   if (corners.size() < 3) {
     corners.clear();
-    const double perimeter = polylineLength2(rotated(ring, 0)) + (ring.back() - ring.front()).norm();
+    const double perimeter = polylineLength2(ring) + (ring.back() - ring.front()).norm();
     double s = 0.0;
     for (size_t i = 0; i < n && corners.size() < 4; ++i) {
       if (s >= perimeter * double(corners.size()) / 4.0) corners.push_back(i);

@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <tuple>
+
+#include "engine/io/vector_map.h"
 
 namespace hdprior {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
+using Mark = RoadPaint::Mark;
 
 // The lines of a mark type, left to right: dashed or not. Empty when nothing is painted.
 std::vector<bool> linesOf(const std::string& type) {
@@ -30,6 +34,53 @@ std::tuple<long, long, long, long> lineKey(const Polyline3& line) {
   return {a.first, a.second, b.first, b.second};
 }
 
+void addLine(const Polyline3& line, const std::string& type, const PaintOptions& options, std::vector<Mark>& marks) {
+  const std::vector<bool> lines = linesOf(type);
+  if (lines.empty()) return;
+  const uint8_t reflectivity = type.find("WHITE") != std::string::npos ? options.white : options.yellow;
+  const double w = options.lineWidth, spacing = w + options.doubleLineGap;
+  double s = 0.0;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const Vec2 a = line[i].head<2>(), d = line[i + 1].head<2>() - a;
+    const double length = d.norm();
+    if (length < 1e-6) continue;
+    for (size_t k = 0; k < lines.size(); ++k) {
+      // Left of the line is positive across; the lines of a pair sit either side of it.
+      const double centre = lines.size() == 1 ? 0.0 : (k == 0 ? 0.5 : -0.5) * spacing;
+      Mark m{a, d / length, length, centre - 0.5 * w, centre + 0.5 * w, s, 0.0, 0.0, reflectivity};
+      if (lines[k]) {
+        m.on = options.dashLength;
+        m.period = options.dashLength + options.dashGap;
+      }
+      marks.push_back(m);
+    }
+    s += length;
+  }
+}
+
+void addCrossing(const PedestrianCrossing& c, const PaintOptions& options, std::vector<Mark>& marks) {
+  // Stripes along the crossing's edges' direction, repeated along edge1, spanning to edge2.
+  const Vec2 a = c.edge1.front().head<2>(), b = c.edge1.back().head<2>();
+  const double length = (b - a).norm();
+  if (length < 1e-6) return;
+  const Vec2 along = (b - a) / length, across(-along.y(), along.x());
+  double lo = 0.0, hi = 0.0;
+  for (const Eigen::Vector3d& p : c.edge2) {
+    const double v = (p.head<2>() - a).dot(across);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  marks.push_back({a, along, length, lo, hi, 0.0, options.stripeWidth, options.stripeWidth + options.stripeGap,
+                    options.white});
+}
+
+bool covers(const Mark& m, const Vec2& p) {
+  const Vec2 d = p - m.origin;
+  const double a = d.dot(m.along), c = m.along.x() * d.y() - m.along.y() * d.x();
+  if (a < 0.0 || a > m.length || c < m.acrossMin || c > m.acrossMax) return false;
+  return m.period <= 0.0 || std::fmod(m.phase + a, m.period) < m.on;
+}
+
 }  // namespace
 
 RoadPaint::RoadPaint(const VectorMap& map, const Vec2& lo, const Vec2& hi, const PaintOptions& options)
@@ -44,50 +95,10 @@ RoadPaint::RoadPaint(const VectorMap& map, const Vec2& lo, const Vec2& hi, const
     for (const auto& [line, type] : {std::pair(&lane.leftLaneBoundary, &lane.leftLaneMarkType),
                                      std::pair(&lane.rightLaneBoundary, &lane.rightLaneMarkType)})
       if (line->size() >= 2 && !linesOf(*type).empty() && near(*line) && painted.insert(lineKey(*line)).second)
-        addLine(*line, *type);
+        addLine(*line, *type, options_, marks_);
   for (const PedestrianCrossing& c : map.pedestrianCrossings)
-    if (c.edge1.size() >= 2 && c.edge2.size() >= 2 && near(c.edge1)) addCrossing(c);
+    if (c.edge1.size() >= 2 && c.edge2.size() >= 2 && near(c.edge1)) addCrossing(c, options_, marks_);
   index(lo, hi);
-}
-
-void RoadPaint::addLine(const Polyline3& line, const std::string& type) {
-  const std::vector<bool> lines = linesOf(type);
-  if (lines.empty()) return;
-  const uint8_t reflectivity = type.find("WHITE") != std::string::npos ? options_.white : options_.yellow;
-  const double w = options_.lineWidth, spacing = w + options_.doubleLineGap;
-  double s = 0.0;
-  for (size_t i = 0; i + 1 < line.size(); ++i) {
-    const Vec2 a = line[i].head<2>(), d = line[i + 1].head<2>() - a;
-    const double length = d.norm();
-    if (length < 1e-6) continue;
-    for (size_t k = 0; k < lines.size(); ++k) {
-      // Left of the line is positive across; the lines of a pair sit either side of it.
-      const double centre = lines.size() == 1 ? 0.0 : (k == 0 ? 0.5 : -0.5) * spacing;
-      Mark m{a, d / length, length, centre - 0.5 * w, centre + 0.5 * w, s, 0.0, 0.0, reflectivity};
-      if (lines[k]) {
-        m.on = options_.dashLength;
-        m.period = options_.dashLength + options_.dashGap;
-      }
-      marks_.push_back(m);
-    }
-    s += length;
-  }
-}
-
-void RoadPaint::addCrossing(const PedestrianCrossing& c) {
-  // Stripes along the crossing's edges' direction, repeated along edge1, spanning to edge2.
-  const Vec2 a = c.edge1.front().head<2>(), b = c.edge1.back().head<2>();
-  const double length = (b - a).norm();
-  if (length < 1e-6) return;
-  const Vec2 along = (b - a) / length, across(-along.y(), along.x());
-  double lo = 0.0, hi = 0.0;
-  for (const Eigen::Vector3d& p : c.edge2) {
-    const double v = (p.head<2>() - a).dot(across);
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  marks_.push_back({a, along, length, lo, hi, 0.0, options_.stripeWidth, options_.stripeWidth + options_.stripeGap,
-                    options_.white});
 }
 
 void RoadPaint::index(const Vec2& lo, const Vec2& hi) {
@@ -113,13 +124,6 @@ void RoadPaint::index(const Vec2& lo, const Vec2& hi) {
   items_.assign(cellStart_.back(), 0);
   std::vector<uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
   for (size_t k = 0; k < marks_.size(); ++k) forCells(marks_[k], [&](size_t i) { items_[fill[i]++] = uint32_t(k); });
-}
-
-bool RoadPaint::covers(const Mark& m, const Vec2& p) {
-  const Vec2 d = p - m.origin;
-  const double a = d.dot(m.along), c = m.along.x() * d.y() - m.along.y() * d.x();
-  if (a < 0.0 || a > m.length || c < m.acrossMin || c > m.acrossMax) return false;
-  return m.period <= 0.0 || std::fmod(m.phase + a, m.period) < m.on;
 }
 
 uint8_t RoadPaint::reflectivityAt(const Vec2& p) const {

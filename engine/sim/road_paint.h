@@ -1,14 +1,14 @@
 #pragma once
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "engine/io/vector_map.h"
 #include "engine/map/grid_geometry.h"
 
 namespace hdprior {
+
+struct VectorMap;
 
 // Painted road markings (retro-reflective paint, several times as bright as asphalt).
 struct PaintOptions {
@@ -31,7 +31,6 @@ class RoadPaint {
   uint8_t reflectivityAt(const Eigen::Vector2d& city) const;
   size_t markCount() const { return marks_.size(); }
 
- private:
   // A rectangle painted along `along` from `origin` for `length`, across it from acrossMin to
   // acrossMax, in dashes `on` metres long every `period` metres (solid: period 0) from `phase`.
   struct Mark {
@@ -40,10 +39,9 @@ class RoadPaint {
     double phase = 0.0, on = 0.0, period = 0.0;
     uint8_t reflectivity = 0;
   };
-  void addLine(const Polyline3& line, const std::string& markType);
-  void addCrossing(const PedestrianCrossing& crossing);
+
+ private:
   void index(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
-  static bool covers(const Mark& m, const Eigen::Vector2d& p);
 
   PaintOptions options_;
   std::vector<Mark> marks_;

@@ -49,7 +49,9 @@ TEST(BoundaryEdit, AKerbStretchMovesTaperedAndDensified) {
     EXPECT_NEAR(edit->stretch.back().y(), 0.0, 1e-9);
     double deepest = 0.0;
     for (const Eigen::Vector2d& p : edit->stretch) {
-      if (p.x() >= 15.0 && p.x() <= 25.0) EXPECT_NEAR(p.y(), -offset, 1e-9);  // outwards is -y here
+      if (p.x() >= 15.0 && p.x() <= 25.0) {
+        EXPECT_NEAR(p.y(), -offset, 1e-9);  // outwards is -y here
+      }
       deepest = std::max(deepest, std::abs(p.y()));
     }
     EXPECT_NEAR(deepest, std::abs(offset), 1e-9);

@@ -100,8 +100,9 @@ void expectLabelled(const VectorMap& world, const ChangedMap& changed, const Map
       for (size_t i = 0; i < c.changedStretch.size(); ++i) {
         const Eigen::Vector2d& p = c.changedStretch[i];
         EXPECT_TRUE(ringContains(a, p) || distanceTo(p, a, true) < 1e-6);
-        if (i > 0 && i + 1 < c.changedStretch.size())
+        if (i > 0 && i + 1 < c.changedStretch.size()) {
           EXPECT_NEAR(distanceTo(p, c.worldStretch, false), -c.offsetM, 0.05 * -c.offsetM);
+        }
       }
       break;
     }
@@ -120,7 +121,9 @@ void expectLabelled(const VectorMap& world, const ChangedMap& changed, const Map
       for (const Eigen::Vector2d& p : c.changedStretch) {
         const double d = distanceTo(p, a, true);
         farthest = std::max(farthest, d);
-        if (d > 0.1) EXPECT_EQ(ringContains(a, p), c.offsetM < 0.0);  // inwards: inside the world's polygon
+        if (d > 0.1) {
+          EXPECT_EQ(ringContains(a, p), c.offsetM < 0.0);  // inwards: inside the world's polygon
+        }
       }
       EXPECT_NEAR(farthest, std::abs(c.offsetM), 0.05 * std::abs(c.offsetM));
       break;
@@ -221,7 +224,9 @@ TEST(MapChange, TheSideCarLabelsEachChangeInTbVsVocabulary) {
       EXPECT_EQ(c.contains("map_outline"), change != "removed" && change != "crosswalk_deleted") << change;
       EXPECT_EQ(c.contains("changed_stretch"), change == "narrowed" || change == "kerb_moved") << change;
       EXPECT_EQ(c.contains("shift_m"), change == "shifted") << change;
-      if (c.contains("world_outline")) EXPECT_EQ(c["world_outline"][0].size(), 2u);
+      if (c.contains("world_outline")) {
+        EXPECT_EQ(c["world_outline"][0].size(), 2u);
+      }
     }
   }
   EXPECT_EQ(changes.size(), 7u);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "engine/io/vector_map.h"
 #include "engine/map/lane_graph.h"
 #include "engine/sim/crosswalk_sites.h"
 #include "engine/sim/lidar_model.h"
