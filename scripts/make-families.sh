@@ -32,7 +32,7 @@ families="${FAMILIES:-tuning validation}"
 validation_base="${VALIDATION_BASE:-200}"
 map_change="${MAP_CHANGE:-0}"
 within=()
-[[ -n "${MAP_CHANGE_WITHIN:-}" ]] && within=(--map-change-within "$MAP_CHANGE_WITHIN")
+if [[ -n "${MAP_CHANGE_WITHIN:-}" ]]; then within=(--map-change-within "$MAP_CHANGE_WITHIN"); fi
 if ! [[ "$validation_base" =~ ^[0-9]+$ ]] || (( validation_base < 200 )); then
   echo "make-families.sh: VALIDATION_BASE must be an integer >= 200, not '$validation_base'" >&2
   exit 2
