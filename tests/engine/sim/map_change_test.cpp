@@ -13,27 +13,20 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
-#include "engine/map/lane_graph.h"
 #include "engine/sim/crosswalk_sites.h"
 #include "engine/sim/drivable_lookup.h"
-#include "engine/sim/town_generator.h"
-#include "engine/sim/trajectory.h"
+#include "town_route.h"
 
 namespace hdprior {
 namespace {
 
 using Kind = MapChange::Kind;
 
+// Town 7 and a 40 s route through it.
 struct TownDrive {
-  TownMap town = generateTown(TownOptions{}, 7);
-  std::vector<Eigen::Vector2d> drive;
-  TownDrive() {
-    const GroundHeight ground = GroundHeight::fromNpy(town.groundHeight, town.imgSim2City, "town");
-    const LaneGraph lanes(town.vectorMap, {}, "town");
-    RouteOptions ro;
-    ro.seconds = 40.0;
-    for (const SE3& p : routeTrajectory(lanes, ground, ro, 3).poses()) drive.push_back(p.translation().head<2>());
-  }
+  test::TownRoute townRoute{7, 3, 40.0};
+  const TownMap& town = townRoute.town;
+  const std::vector<Eigen::Vector2d>& drive = townRoute.path;
 };
 
 const TownDrive& townDrive() {

@@ -7,13 +7,11 @@
 #include <cmath>
 
 #include "engine/io/vector_map.h"
-#include "engine/map/lane_graph.h"
 #include "engine/sim/crosswalk_sites.h"
 #include "engine/sim/lidar_model.h"
 #include "engine/sim/scene_builder.h"
 #include "engine/sim/sweep_simulator.h"
-#include "engine/sim/town_generator.h"
-#include "engine/sim/trajectory.h"
+#include "town_route.h"
 
 namespace hdprior {
 namespace {
@@ -72,14 +70,9 @@ TEST(RoadPaint, CrossingsAreZebraStripesAcrossThem) {
 // A town, a route through it and one sweep taken near a crossing: returns on its stripes are
 // brighter than the plain road around it; labels stay road.
 TEST(RoadPaint, ASweepIsBrighterOnTheStripesThanOnTheRoadBeside) {
-  const TownMap town = generateTown(TownOptions{}, 7);
-  const GroundHeight ground = GroundHeight::fromNpy(town.groundHeight, town.imgSim2City, "town");
-  const LaneGraph lanes(town.vectorMap, {}, "town");
-  RouteOptions ro;
-  ro.seconds = 30.0;
-  const PoseTrajectory route = routeTrajectory(lanes, ground, ro, 1);
-  std::vector<Vec2> path;
-  for (const SE3& p : route.poses()) path.push_back(p.translation().head<2>());
+  const test::TownRoute t(7, 1, 30.0);
+  const TownMap& town = t.town;
+  const PoseTrajectory& route = t.route;
   // The first moment the drive is 8-15 m from a crossing's centre.
   int64_t at = -1;
   for (int64_t t = route.startNs(); t < route.endNs() && at < 0; t += 100'000'000)
@@ -89,7 +82,7 @@ TEST(RoadPaint, ASweepIsBrighterOnTheStripesThanOnTheRoadBeside) {
       if (d > 8.0 && d < 15.0) at = t;
     }
   ASSERT_GE(at, 0) << "the route passes no crossing";
-  const Scene scene = buildScene(town.vectorMap, ground, lanes, path, route.startNs(), {}, 1, "town");
+  const Scene scene = buildScene(town.vectorMap, t.ground, t.lanes, t.path, route.startNs(), {}, 1, "town");
   const SimulatedSweep sweep = simulateSweep(scene, argoverseLikeLidar(), route, at, SweepNoise{0.0, 0.0}, 1);
   const SE3 cityTEgo = route.at(at);
   const RoadPaint& paint = scene.paint();
