@@ -19,9 +19,9 @@ struct SimArguments {
   std::string map, out, trajectory, family;
   double seconds = 0.0;  // not given: the default length (the map's poses' span, or the simulator's)
   SweepNoise noise;
-  double parked = SceneOptions{}.parked, mapChange = 0.0;
+  double parked = SceneOptions{}.parked, mapChange = 0.0, mapChangeWithin = 0.0;
   bool quiet = false;
-  bool townGiven = false, secondsGiven = false, parkedGiven = false;
+  bool townGiven = false, secondsGiven = false, parkedGiven = false, withinGiven = false;
 };
 
 // A map with poses drives them; a map alone (or a town) a route.
@@ -54,6 +54,7 @@ int runSim(const SimArguments& a) {
     if (a.parkedGiven) throw Error("option --parked", "a --family draws the parked cars; leave --parked out");
   }
   o.mapChange = a.mapChange;
+  if (a.withinGiven) o.mapChangeWithin = a.mapChangeWithin;
   o.threads = int(a.threads);
   if (!a.quiet) o.progress = [bar = std::make_shared<ProgressBar>("sim")](size_t d, size_t t) { (*bar)(d, t); };
   const SimulationResult r = simulateLog(o);
@@ -89,11 +90,17 @@ Command addSimCommand(CLI::App& hdprior) {
                             ->type_name("P")
                             ->check(finiteNumber());
   command->add_option("--map-change", a->mapChange, "share of the map changed since it was drawn, 0 to 1")->type_name("F")->check(finiteNumber());
+  CLI::Option* within = command->add_option("--map-change-within", a->mapChangeWithin,
+                                             "change only elements within this many metres of the drive (default: anywhere)")
+                            ->type_name("M")
+                            ->default_str("")
+                            ->check(finiteNumber());
   command->add_option("--dropout", a->noise.dropout, "share of returns dropped")->type_name("D")->check(finiteNumber());
   command->add_option("--threads", a->threads, "threads casting rays")->type_name("T")->check(integerAtLeast(1));
   command->add_flag("--quiet", a->quiet, "no progress bar");
-  command->callback([a, town, seconds, parked] {
+  command->callback([a, town, seconds, parked, within] {
     a->townGiven = town->count() > 0;
+    a->withinGiven = within->count() > 0;
     a->secondsGiven = seconds->count() > 0;
     a->parkedGiven = parked->count() > 0;
   });

@@ -9,8 +9,10 @@
 # Environment: HDPRIOR (the binary), REAL_LOG (the real log whose map is driven), THREADS (2),
 # DURATION (seconds of every log instead of 30-40), FAMILIES (default "tuning validation") and
 # VALIDATION_BASE (200: towns 201.., seeds 2001..; another base, e.g. 300, draws a held-out set of
-# validation worlds that nothing has been looked at on) and MAP_CHANGE (0: the share of the drivable
-# polygons changed in the written map, the same drives over a stale map; sim --map-change).
+# validation worlds that nothing has been looked at on), MAP_CHANGE (0: the share of the drivable
+# polygons and crossings changed in the written map, the same drives over a stale map; sim
+# --map-change) and MAP_CHANGE_WITHIN (unset: changes anywhere in the map; M: only elements within
+# M metres of the drive; sim --map-change-within, needs MAP_CHANGE > 0).
 set -euo pipefail
 if [[ $# -lt 1 || $# -gt 2 || "$1" == -* ]]; then
   echo "usage: scripts/make-families.sh OUT_DIR [N]" >&2
@@ -29,6 +31,8 @@ threads="${THREADS:-2}"
 families="${FAMILIES:-tuning validation}"
 validation_base="${VALIDATION_BASE:-200}"
 map_change="${MAP_CHANGE:-0}"
+within=()
+if [[ -n "${MAP_CHANGE_WITHIN:-}" ]]; then within=(--map-change-within "$MAP_CHANGE_WITHIN"); fi
 if ! [[ "$validation_base" =~ ^[0-9]+$ ]] || (( validation_base < 200 )); then
   echo "make-families.sh: VALIDATION_BASE must be an integer >= 200, not '$validation_base'" >&2
   exit 2
@@ -59,7 +63,7 @@ for family in $families; do
     fi
     echo "[$family $i/$n] $source, seed $seed, $seconds s" >&2
     id=$("$hdprior" sim "${args[@]}" --family "$family" --seed "$seed" --seconds "$seconds" \
-           --map-change "$map_change" --threads "$threads" --quiet --out "$out/$family")
+           --map-change "$map_change" "${within[@]}" --threads "$threads" --quiet --out "$out/$family")
     printf '%s\t%s\t%s\t%s\t%s\n' "$family" "$source" "$seed" "$seconds" "$id" >> "$index.partial"
   done
 done

@@ -5,7 +5,7 @@
 namespace hdprior {
 
 // Bumped whenever the simulator's output changes, so stale cached demos are not reused.
-inline constexpr int kDemoLogVersion = 2;  // 2: routes smoothed through junctions
+inline constexpr int kDemoLogVersion = 3;  // 2: routes smoothed through junctions; 3: road paint
 
 // The folder the demo log is cached in: $HDPRIOR_CACHE_DIR, else $XDG_CACHE_HOME/hdprior,
 // else $HOME/.cache/hdprior, else <temp>/hdprior-cache.

@@ -42,6 +42,7 @@ std::string logIdFor(const SimulationOptions& o, const std::string& source) {
   key << "hdprior-sim-v1|" << source << '|' << o.seconds << '|' << o.seed << '|' << int(o.trajectory) << '|'
       << o.noise.rangeSigma << '|' << o.noise.dropout << '|' << o.scene.parked << '|' << o.mapChange;
   if (o.family) key << "|family " << familyName(*o.family);  // only then: ids without a family stay
+  if (o.mapChangeWithin) key << "|within " << *o.mapChangeWithin;
   const uint64_t a = hashText(key.str(), 1), b = hashText(key.str(), 2);
   char buf[40];
   std::snprintf(buf, sizeof buf, "%08x-%04x-4%03x-%04x-%012llx", unsigned(a >> 32), unsigned((a >> 16) & 0xffff),
@@ -132,6 +133,9 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   check(o.noise.dropout >= 0.0 && o.noise.dropout < 1.0, "--dropout", "must be in [0, 1)");
   check(o.scene.parked >= 0.0 && o.scene.parked <= 1.0, "--parked", "must be between 0 and 1");
   check(o.mapChange >= 0.0 && o.mapChange <= 1.0, "--map-change", "must be between 0 and 1");
+  check(!o.mapChangeWithin || (*o.mapChangeWithin >= 0.0 && std::isfinite(*o.mapChangeWithin)), "--map-change-within",
+        "must be a distance of at least 0 m");
+  check(!o.mapChangeWithin || o.mapChange > 0.0, "--map-change-within", "needs --map-change F (F > 0)");
   check(o.threads >= 1, "--threads", "must be at least 1");
   check(o.trajectory == SimTrajectory::Route || !o.mapLog.empty(), "--trajectory",
         "real needs a real log (--map LOG)");
@@ -176,10 +180,11 @@ SimulationResult simulateLog(const SimulationOptions& o) {
   for (const SE3& p : cityTEgo.poses()) path.push_back(p.translation().head<2>());
   const Scene scene =
       buildScene(world.map, world.ground, lanes, path, cityTEgo.startNs(), sceneOptions, o.seed, world.source);
-  const ChangedMap written = changeDrivableAreas(world.map, o.mapChange, o.seed);
+  const MapChangeOptions change{o.mapChange, o.mapChangeWithin};
+  const ChangedMap written = changeMap(world.map, change, path, o.seed);
 
   writeMap(world, written.map, o.mapChange > 0.0, temp.path(), logId);
-  if (o.mapChange > 0.0) writeFileAtomically(temp.path() / "map_change.json", mapChangesToJson(o.mapChange, written.changes));
+  if (o.mapChange > 0.0) writeFileAtomically(temp.path() / "map_change.json", mapChangesToJson(change, written.changes));
   if (o.family) writeFileAtomically(temp.path() / "scene_variation.json", sceneVariationToJson(variation));
   writeEgoPoses(temp.path() / "city_SE3_egovehicle.feather", cityTEgo);
   writeSensorCalibration(temp.path() / "calibration" / "egovehicle_SE3_sensor.feather", lidar.calibration());

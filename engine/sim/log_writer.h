@@ -25,7 +25,9 @@ struct SimulationOptions {
   uint64_t seed = 0;                    // scene, route, noise
   SimTrajectory trajectory = SimTrajectory::Route;
   SweepNoise noise;
-  double mapChange = 0.0;               // fraction of drivable polygons changed in the written map
+  double mapChange = 0.0;               // share of the drivable polygons and crossings changed in the
+                                        // written map (changeMap)
+  std::optional<double> mapChangeWithin;  // only elements whose outline passes this near the drive (metres)
   std::optional<SceneFamily> family;    // the scene varied by drawSceneVariation(family, seed); it
                                         // sets town, scene (parked included) and lidar errors
   int threads = 2;
@@ -45,7 +47,8 @@ struct SimulationResult {
 //   sensors/lidar/<ts>.feather (LZ4, float16 x y z, intensity, laser_number, offset_ns),
 //   sensors/lidar_labels/<ts>.feather (one uint8 column "label": PointLabel per point, same rows),
 //   city_SE3_egovehicle.feather (>= 100 Hz), calibration/egovehicle_SE3_sensor.feather,
-//   map/ (the world's map, or the changed one), map_change.json when mapChange > 0,
+//   map/ (the world's map, or the changed one), map_change.json when mapChange > 0 (the changes,
+//   labelled: mapChangesToJson),
 //   scene_variation.json with a family (the calibration written is the believed one).
 // Everything is written into a temporary folder beside it and renamed at the end; on any
 // error nothing is left. The log id is a UUID derived from the options, so the same options

@@ -2,62 +2,68 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <limits>
 #include <numeric>
 #include <random>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "engine/sim/crosswalk_sites.h"
+#include "engine/sim/drivable_area_edits.h"
 
 namespace hdprior {
+namespace {
 
-ChangedMap changeDrivableAreas(const VectorMap& world, double fraction, uint64_t seed) {
-  if (!(fraction >= 0.0 && fraction <= 1.0)) throw Error("option --map-change", "must be between 0 and 1");
-  ChangedMap out{world, {}};
+using Vec2 = Eigen::Vector2d;
+using Kind = MapChange::Kind;
+
+// How many of `eligible` elements change: the share, at least one when there is any.
+size_t changeCount(double fraction, size_t eligible) {
+  if (fraction <= 0.0 || eligible == 0) return 0;
+  return std::max<size_t>(1, size_t(std::llround(fraction * double(eligible))));
+}
+
+Ring2 thinned(std::span<const Vec2> drive, double spacing) {
+  Ring2 out;
+  for (const Vec2& p : drive)
+    if (out.empty() || (p - out.back()).norm() >= spacing) out.push_back(p);
+  if (!drive.empty() && (drive.back() - out.back()).norm() > 0.0) out.push_back(drive.back());
+  return out;
+}
+
+void changeDrivableAreas(const VectorMap& world, const MapChangeOptions& o, const Ring2& drive, uint64_t seed,
+                         ChangedMap& out) {
+  const double within = o.withinM.value_or(std::numeric_limits<double>::infinity());
   const size_t n = world.drivableAreas.size();
-  const size_t count = size_t(std::llround(fraction * double(n)));
-  if (count == 0) return out;
+  std::vector<size_t> eligible;
+  for (size_t i = 0; i < n; ++i)
+    if (!o.withinM || polylineDistance(drive, ringOf(world.drivableAreas[i].areaBoundary), true) <= within)
+      eligible.push_back(i);
   std::mt19937_64 rng(seed ^ 0x3a9c4a11ULL);
-  std::vector<size_t> order(n);
-  std::iota(order.begin(), order.end(), size_t(0));
-  std::shuffle(order.begin(), order.end(), rng);
-  order.resize(count);
-  std::sort(order.begin(), order.end());
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::shuffle(eligible.begin(), eligible.end(), rng);
+  eligible.resize(changeCount(o.fraction, eligible.size()));
+  std::sort(eligible.begin(), eligible.end());
   int64_t nextId = 0;
   for (const DrivableArea& a : world.drivableAreas) nextId = std::max(nextId, a.id + 1);
 
+  const DrivableLookup lookup(world);
+  EditContext context{lookup, drive, within, rng};
   std::vector<bool> removed(n, false);
   std::vector<DrivableArea> added;
-  for (size_t i : order) {
-    const DrivableArea& area = world.drivableAreas[i];
-    const int kind = std::uniform_int_distribution<int>(0, 2)(rng);
-    if (kind == 0) {
-      removed[i] = true;
-      out.changes.push_back({DrivableAreaChange::Kind::Removed, area.id, Eigen::Vector2d::Zero()});
-    } else if (kind == 1) {
-      const double angle = 2 * std::numbers::pi * unit(rng), dist = 1.0 + 2.0 * unit(rng);
-      const Eigen::Vector2d shift(dist * std::cos(angle), dist * std::sin(angle));
-      for (Eigen::Vector3d& v : out.map.drivableAreas[i].areaBoundary) v.head<2>() += shift;
-      out.changes.push_back({DrivableAreaChange::Kind::Shifted, area.id, shift});
-    } else {
-      Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-      for (const Eigen::Vector3d& v : area.areaBoundary) centroid += v.head<2>();
-      centroid /= double(area.areaBoundary.size());
-      const size_t k = std::uniform_int_distribution<size_t>(0, area.areaBoundary.size() - 1)(rng);
-      const Eigen::Vector3d base = area.areaBoundary[k];
-      Eigen::Vector2d u = base.head<2>() - centroid;
-      u = u.norm() > 1e-6 ? Eigen::Vector2d(u.normalized()) : Eigen::Vector2d(1, 0);
-      const Eigen::Vector2d w(-u.y(), u.x());
-      DrivableArea strip;
-      strip.id = nextId++;
-      for (const Eigen::Vector2d& c : {Eigen::Vector2d(base.head<2>() - 4.0 * w), Eigen::Vector2d(base.head<2>() + 4.0 * w),
-                                       Eigen::Vector2d(base.head<2>() + 4.0 * w + 15.0 * u),
-                                       Eigen::Vector2d(base.head<2>() - 4.0 * w + 15.0 * u)})
-        strip.areaBoundary.emplace_back(c.x(), c.y(), base.z());
-      added.push_back(strip);
-      out.changes.push_back({DrivableAreaChange::Kind::Added, strip.id, Eigen::Vector2d::Zero()});
+  for (size_t i : eligible) {
+    // Another kind when the one drawn does not fit the polygon (Removed always does).
+    const int first = std::uniform_int_distribution<int>(0, 4)(rng);
+    for (int k = 0; k < 5; ++k) {
+      const Kind kind = Kind((first + k) % 5);
+      DrivableArea written;
+      auto change = editDrivableArea(kind, world.drivableAreas[i], nextId, context, written);
+      if (!change) continue;
+      if (kind == Kind::Removed) removed[i] = true;
+      else if (kind == Kind::Added) added.push_back(written), ++nextId;
+      else out.map.drivableAreas[i] = written;
+      out.changes.push_back(std::move(*change));
+      break;
     }
   }
   std::vector<DrivableArea> kept;
@@ -67,18 +73,116 @@ ChangedMap changeDrivableAreas(const VectorMap& world, double fraction, uint64_t
   std::sort(kept.begin(), kept.end(), [](const DrivableArea& a, const DrivableArea& b) { return a.id < b.id; });
   out.map.drivableAreas = std::move(kept);
   if (out.map.drivableAreas.empty()) throw Error("option --map-change", "would remove every drivable area");
+}
+
+void changeCrossings(const VectorMap& world, const MapChangeOptions& o, const Ring2& drive, uint64_t seed,
+                     ChangedMap& out) {
+  const auto near = [&](const PedestrianCrossing& c) {
+    return !o.withinM || polylineDistance(drive, crossingOutline(c), true) <= *o.withinM;
+  };
+  std::vector<size_t> deletable;
+  for (size_t i = 0; i < world.pedestrianCrossings.size(); ++i)
+    if (near(world.pedestrianCrossings[i])) deletable.push_back(i);
+  std::vector<PedestrianCrossing> sites = crosswalkSites(world);
+  std::erase_if(sites, [&](const PedestrianCrossing& c) { return !near(c); });
+  size_t count = changeCount(o.fraction, deletable.size());
+  if (o.fraction > 0.0 && count == 0 && !sites.empty()) count = 1;
+  std::mt19937_64 rng(seed ^ 0x7c1d05a3ULL);
+  std::shuffle(deletable.begin(), deletable.end(), rng);
+  std::shuffle(sites.begin(), sites.end(), rng);
+  int64_t nextId = 1;
+  for (const PedestrianCrossing& c : world.pedestrianCrossings) nextId = std::max(nextId, c.id + 1);
+  std::vector<int64_t> deleted;
+  for (size_t k = 0; k < count && (!deletable.empty() || !sites.empty()); ++k) {
+    const bool insert = std::uniform_int_distribution<int>(0, 1)(rng) == 1 ? !sites.empty() : deletable.empty();
+    MapChange change;
+    if (insert) {
+      PedestrianCrossing c = sites.back();
+      sites.pop_back();
+      c.id = nextId++;
+      change.kind = Kind::CrosswalkInserted;
+      change.id = c.id;
+      change.mapOutline = crossingOutline(c);
+      out.map.pedestrianCrossings.push_back(std::move(c));
+    } else {
+      const PedestrianCrossing& c = world.pedestrianCrossings[deletable.back()];
+      deletable.pop_back();
+      change.kind = Kind::CrosswalkDeleted;
+      change.id = c.id;
+      change.worldOutline = crossingOutline(c);
+      deleted.push_back(c.id);
+    }
+    out.changes.push_back(std::move(change));
+  }
+  std::erase_if(out.map.pedestrianCrossings,
+                [&](const PedestrianCrossing& c) { return std::find(deleted.begin(), deleted.end(), c.id) != deleted.end(); });
+  std::sort(out.map.pedestrianCrossings.begin(), out.map.pedestrianCrossings.end(),
+            [](const PedestrianCrossing& a, const PedestrianCrossing& b) { return a.id < b.id; });
+}
+
+// Nearest distance from the drive to what differs: the changed stretch and where it is in the
+// world, or the element's outlines.
+double routeDistance(const Ring2& drive, const MapChange& c) {
+  if (!c.changedStretch.empty())
+    return std::min(polylineDistance(drive, c.changedStretch, false), polylineDistance(drive, c.worldStretch, false));
+  return std::min(polylineDistance(drive, c.worldOutline, true), polylineDistance(drive, c.mapOutline, true));
+}
+
+const char* kindName(Kind k) {
+  switch (k) {
+    case Kind::Removed: return "removed";
+    case Kind::Shifted: return "shifted";
+    case Kind::Added: return "added";
+    case Kind::Narrowed: return "narrowed";
+    case Kind::KerbMoved: return "kerb_moved";
+    case Kind::CrosswalkInserted: return "crosswalk_inserted";
+    case Kind::CrosswalkDeleted: return "crosswalk_deleted";
+  }
+  return "";
+}
+
+nlohmann::json points(const Ring2& ring) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const Vec2& p : ring) j.push_back({p.x(), p.y()});
+  return j;
+}
+
+}  // namespace
+
+ChangedMap changeMap(const VectorMap& world, const MapChangeOptions& options, std::span<const Vec2> drive, uint64_t seed) {
+  if (!(options.fraction >= 0.0 && options.fraction <= 1.0)) throw Error("option --map-change", "must be between 0 and 1");
+  if (options.withinM && !(*options.withinM >= 0.0 && std::isfinite(*options.withinM)))
+    throw Error("option --map-change-within", "must be a distance of at least 0 m");
+  ChangedMap out{world, {}};
+  if (options.fraction == 0.0) return out;
+  const Ring2 path = thinned(drive, 0.5);
+  changeDrivableAreas(world, options, path, seed, out);
+  changeCrossings(world, options, path, seed, out);
+  for (MapChange& c : out.changes) c.routeDistanceM = routeDistance(path, c);
   return out;
 }
 
-std::string mapChangesToJson(double fraction, const std::vector<DrivableAreaChange>& changes) {
+std::string mapChangesToJson(const MapChangeOptions& options, const std::vector<MapChange>& changes) {
   nlohmann::json j;
-  j["fraction"] = fraction;
+  j["fraction"] = options.fraction;
+  j["within_m"] = options.withinM ? nlohmann::json(*options.withinM) : nlohmann::json(nullptr);
   j["changes"] = nlohmann::json::array();
-  for (const DrivableAreaChange& c : changes) {
-    const char* kind = c.kind == DrivableAreaChange::Kind::Removed   ? "removed"
-                       : c.kind == DrivableAreaChange::Kind::Shifted ? "shifted"
-                                                                     : "added";
-    j["changes"].push_back({{"drivable_area_id", c.id}, {"change", kind}, {"shift_m", {c.shift.x(), c.shift.y()}}});
+  for (const MapChange& c : changes) {
+    nlohmann::json e = {{"element", c.crossing() ? "pedestrian_crossing" : "drivable_area"},
+                        {"id", c.id},
+                        {"change", kindName(c.kind)},
+                        {"tbv_change", c.kind == Kind::CrosswalkInserted  ? "insert_crosswalk"
+                                       : c.kind == Kind::CrosswalkDeleted ? "delete_crosswalk"
+                                                                          : "lane_geometry_change"}};
+    if (!c.worldOutline.empty()) e["world_outline"] = points(c.worldOutline);
+    if (!c.mapOutline.empty()) e["map_outline"] = points(c.mapOutline);
+    if (!c.changedStretch.empty()) {
+      e["changed_stretch"] = points(c.changedStretch);
+      e["offset_m"] = c.offsetM;
+    }
+    if (c.kind == Kind::Shifted) e["shift_m"] = {c.shift.x(), c.shift.y()};
+    e["route_distance_m"] = c.routeDistanceM;
+    j["changes"].push_back(std::move(e));
   }
   return j.dump(2) + "\n";
 }

@@ -1,34 +1,52 @@
 #pragma once
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "engine/io/vector_map.h"
+#include "engine/sim/polygon2d.h"
 
 namespace hdprior {
 
+struct MapChangeOptions {
+  double fraction = 0.0;          // share of the eligible drivable polygons (and crossings) changed, 0..1
+  std::optional<double> withinM;  // eligible: outline within this many metres of the drive; nullopt: anywhere
+};
+
 // One difference between the written map and the world that was ray-cast.
-struct DrivableAreaChange {
-  enum class Kind { Removed, Shifted, Added };
+struct MapChange {
+  enum class Kind { Removed, Shifted, Added, Narrowed, KerbMoved, CrosswalkInserted, CrosswalkDeleted };
   Kind kind = Kind::Removed;
-  int64_t id = 0;                                     // the polygon's id (new id for Added)
-  Eigen::Vector2d shift = Eigen::Vector2d::Zero();    // Shifted: metres, city frame
+  int64_t id = 0;                   // the world's id (Removed, CrosswalkDeleted) or the written map's
+  Ring2 worldOutline, mapOutline;   // empty where the element is absent
+  Ring2 changedStretch;             // Narrowed, KerbMoved: the written boundary that differs ...
+  Ring2 worldStretch;               // ... and where it is in the world
+  Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // Shifted: metres, city frame
+  double offsetM = 0.0;             // Narrowed, KerbMoved: how far the boundary moved, + outwards
+  double routeDistanceM = 0.0;      // nearest distance from the drive to what differs
+  bool crossing() const { return kind == Kind::CrosswalkInserted || kind == Kind::CrosswalkDeleted; }
 };
 
 struct ChangedMap {
   VectorMap map;
-  std::vector<DrivableAreaChange> changes;
+  std::vector<MapChange> changes;
 };
 
-// The TbV theme: a map that is out of date. round(fraction * N) of the N drivable polygons
-// (chosen by seed) are removed, shifted by 1-3 m, or get a new drivable polygon added beside
-// them (a 8 m x 15 m strip reaching outwards from one of its vertices). Lanes and crossings
-// are kept. Throws Error for a fraction outside [0, 1].
-ChangedMap changeDrivableAreas(const VectorMap& world, double fraction, uint64_t seed);
-// {"fraction": F, "changes": [{"drivable_area_id": id, "change": "removed|shifted|added",
-// "shift_m": [dx, dy]}]}
-std::string mapChangesToJson(double fraction, const std::vector<DrivableAreaChange>& changes);
+// The TbV theme: a map that is out of date. Of the eligible drivable polygons (all, or those
+// whose outline passes within options.withinM of `drive`), a share `fraction` (at least one when
+// fraction > 0) is chosen by seed and each removed, shifted by 1-3 m, given a new 8 m x 15 m
+// polygon beside it where the world has no road, narrowed (one side moved 1-2.5 m inwards), or
+// has a 10-25 m stretch of kerb moved 1-3 m in or out (tapered over 3 m). Of the eligible
+// crossings as many again in share (at least one when any is eligible or could be inserted) are
+// deleted or inserted (crosswalkSites), even odds. Lanes are kept. Throws Error for a fraction
+// outside [0, 1] or a negative distance.
+ChangedMap changeMap(const VectorMap& world, const MapChangeOptions& options, std::span<const Eigen::Vector2d> drive,
+                     uint64_t seed);
+// The side-car map_change.json (docs/formats.md).
+std::string mapChangesToJson(const MapChangeOptions& options, const std::vector<MapChange>& changes);
 
 }  // namespace hdprior

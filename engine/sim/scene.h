@@ -8,6 +8,7 @@
 
 #include "engine/map/boundary_distance.h"
 #include "engine/map/grid_geometry.h"
+#include "engine/sim/road_paint.h"
 #include "engine/sim/roadside.h"
 
 namespace hdprior {
@@ -59,6 +60,9 @@ class Scene {
   // vertical step of curbHeight() at the map's boundary, flat road and sidewalks.
   void setRoadside(Roadside roadside);
   const Roadside* roadside() const { return roadside_ ? &*roadside_ : nullptr; }
+  // Lane lines and zebra crossings on the road (brighter returns; still labelled road).
+  void setPaint(RoadPaint paint) { paint_ = std::move(paint); }
+  const RoadPaint& paint() const { return paint_; }
 
   double groundHeight(const Eigen::Vector2d& city) const;  // bilinear, clamped at the border
   // Signed distance to the physical kerb (the map's drivable boundary unless a roadside moves
@@ -119,6 +123,7 @@ class Scene {
   double sidewalkWidth_;
   double maxSlope_ = 0.1, groundSlope_ = 0.1, roadSlope_ = 0.1, maxRise_ = 0.2;
   std::optional<Roadside> roadside_;
+  RoadPaint paint_;
   double curbPhase_[2] = {0.0, 0.0};
   std::vector<SceneBox> boxes_;
   std::vector<Eigen::Vector2d> boxAxes_;

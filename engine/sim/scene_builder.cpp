@@ -285,6 +285,8 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   if (options.roadside)
     scene.setRoadside(Roadside::build(*options.roadside, region.lo, region.hi, raster.boundaryPoints(), islands, seed));
 
+  scene.setPaint(RoadPaint(world, region.lo, region.hi));
+
   std::mt19937_64 rng(seed ^ 0x5ce4e5eedULL);
   Placer placer{scene, path, rng};
   // Scene families draw from their own generator, so the default scene stays as it was.

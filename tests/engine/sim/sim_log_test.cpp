@@ -168,37 +168,40 @@ TEST(SimLog, MapChangeRecordsEveryDifference) {
   const ArgoverseLog log(r.dir), real(test::sharedLog());
   const VectorMap world = readVectorMap(real.mapFiles().vectorMap), written = readVectorMap(log.mapFiles().vectorMap);
   const auto json = nlohmann::json::parse(readFileText(r.dir / "map_change.json"));
-  ASSERT_EQ(json["changes"].size(), size_t(std::llround(0.4 * double(world.drivableAreas.size()))));
+  EXPECT_TRUE(json["within_m"].is_null());
   const auto find = [](const VectorMap& m, int64_t id) -> const DrivableArea* {
     for (const DrivableArea& a : m.drivableAreas)
       if (a.id == id) return &a;
     return nullptr;
   };
-  size_t removed = 0, shifted = 0, added = 0;
+  size_t removed = 0, added = 0, other = 0, crossings = 0;
   for (const auto& c : json["changes"]) {
-    const int64_t id = c["drivable_area_id"];
+    const int64_t id = c["id"];
     const std::string kind = c["change"];
+    if (c["element"] == "pedestrian_crossing") {
+      ++crossings;
+      continue;
+    }
     if (kind == "removed") {
       EXPECT_TRUE(find(world, id));
       EXPECT_FALSE(find(written, id));
       ++removed;
-    } else if (kind == "shifted") {
-      const DrivableArea *a = find(world, id), *b = find(written, id);
-      ASSERT_TRUE(a && b);
-      const Eigen::Vector2d shift(c["shift_m"][0], c["shift_m"][1]);
-      EXPECT_GE(shift.norm(), 1.0);
-      EXPECT_LE(shift.norm(), 3.0);
-      EXPECT_LT((b->areaBoundary[0].head<2>() - a->areaBoundary[0].head<2>() - shift).norm(), 1e-6);
-      ++shifted;
-    } else {
-      EXPECT_EQ(kind, "added");
+    } else if (kind == "added") {
       EXPECT_FALSE(find(world, id));
       EXPECT_TRUE(find(written, id));
       ++added;
+    } else {
+      const DrivableArea *a = find(world, id), *b = find(written, id);
+      ASSERT_TRUE(a && b) << kind;
+      EXPECT_NE(vectorMapToJson({{*a}, {}, {}}), vectorMapToJson({{*b}, {}, {}})) << kind;
+      ++other;
     }
   }
+  // The real map's polygons: a share of all of them (no --map-change-within).
+  EXPECT_EQ(removed + added + other, size_t(std::llround(0.4 * double(world.drivableAreas.size()))));
+  EXPECT_EQ(crossings, std::max<size_t>(1, size_t(std::llround(0.4 * double(world.pedestrianCrossings.size())))));
   EXPECT_EQ(written.drivableAreas.size(), world.drivableAreas.size() - removed + added);
-  std::printf("[ info ] %zu removed, %zu shifted, %zu added\n", removed, shifted, added);
+  std::printf("[ info ] %zu removed, %zu added, %zu reshaped, %zu crossings\n", removed, added, other, crossings);
 }
 
 // Every file under `dir`, relative path -> bytes.
@@ -252,6 +255,9 @@ TEST(SimCommand, BadOptionsFailWithOneLineAndLeaveNothing) {
   expectCleanFailure("sim --town 1 --noise -1" + o, out, "--noise");
   expectCleanFailure("sim --town 1 --parked 2" + o, out, "--parked");
   expectCleanFailure("sim --town 1 --map-change 1.5" + o, out, "--map-change");
+  expectCleanFailure("sim --town 1 --map-change 0.3 --map-change-within -2" + o, out, "--map-change-within");
+  expectCleanFailure("sim --town 1 --map-change 0.3 --map-change-within x" + o, out, "--map-change-within");
+  expectCleanFailure("sim --town 1 --map-change-within 15" + o, out, "--map-change-within");
   expectCleanFailure("sim --town 1 --family test" + o, out, "--family");
   expectCleanFailure("sim --town 1 --family tuning --parked 0.2" + o, out, "--parked");
   expectCleanFailure("sim --map /nonexistent/log" + o, out, "/nonexistent/log");

@@ -1,0 +1,93 @@
+#include "engine/sim/polygon2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hdprior {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+bool segmentsCross(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+  const double d1 = cross(a1 - a0, b0 - a0), d2 = cross(a1 - a0, b1 - a0);
+  const double d3 = cross(b1 - b0, a0 - b0), d4 = cross(b1 - b0, a1 - b0);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+}
+
+}  // namespace
+
+Ring2 ringOf(const Polyline3& line) {
+  Ring2 ring;
+  for (const Eigen::Vector3d& v : line) ring.push_back(v.head<2>());
+  if (ring.size() > 1 && (ring.front() - ring.back()).norm() < 1e-9) ring.pop_back();
+  return ring;
+}
+
+double signedArea(const Ring2& ring) {
+  double a = 0.0;
+  for (size_t i = 0; i < ring.size(); ++i) a += cross(ring[i], ring[(i + 1) % ring.size()]);
+  return 0.5 * a;
+}
+
+bool ringContains(const Ring2& ring, const Vec2& p) {
+  bool inside = false;
+  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 &a = ring[i], &b = ring[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      inside = !inside;
+  }
+  return inside;
+}
+
+bool isSimpleRing(const Ring2& ring) {
+  const size_t n = ring.size();
+  if (n < 3) return false;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // adjacent through the closing edge
+      if (segmentsCross(ring[i], ring[(i + 1) % n], ring[j], ring[(j + 1) % n])) return false;
+    }
+  return true;
+}
+
+double segmentDistance(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+  if (segmentsCross(a0, a1, b0, b1)) return 0.0;
+  return std::min({pointSegmentDistance(a0, b0, b1), pointSegmentDistance(a1, b0, b1),
+                   pointSegmentDistance(b0, a0, a1), pointSegmentDistance(b1, a0, a1)});
+}
+
+double polylineDistance(std::span<const Vec2> a, std::span<const Vec2> b, bool closedB) {
+  double best = std::numeric_limits<double>::infinity();
+  if (a.empty() || b.empty()) return best;
+  const size_t na = std::max<size_t>(a.size() - 1, 1);
+  const size_t nb = closedB && b.size() > 2 ? b.size() : std::max<size_t>(b.size() - 1, 1);
+  for (size_t j = 0; j < nb; ++j) {
+    const Vec2 &b0 = b[j], &b1 = b[std::min((j + 1) % b.size(), b.size() - 1)];
+    const Vec2 bLo = b0.cwiseMin(b1), bHi = b0.cwiseMax(b1);
+    for (size_t i = 0; i < na; ++i) {
+      const Vec2 &a0 = a[i], &a1 = a[std::min(i + 1, a.size() - 1)];
+      // The boxes' gap bounds the distance from below: most pairs end here.
+      const Vec2 gap = (a0.cwiseMin(a1) - bHi).cwiseMax(bLo - a0.cwiseMax(a1)).cwiseMax(0.0);
+      if (gap.squaredNorm() >= best * best) continue;
+      best = std::min(best, segmentDistance(a0, a1, b0, b1));
+    }
+  }
+  return best;
+}
+
+Vec2 leftNormal(const Vec2& a, const Vec2& b) {
+  const Vec2 d = (b - a).normalized();
+  return {-d.y(), d.x()};
+}
+
+}  // namespace hdprior
