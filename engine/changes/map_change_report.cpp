@@ -1,5 +1,6 @@
 #include "engine/changes/map_change_report.h"
 
+#include <future>
 #include <map>
 
 #include "engine/changes/surface_classes.h"
@@ -37,6 +38,12 @@ SurfaceEvidence evidenceGrid(const ArgoverseLog& log, const PoseTrajectory& pose
 }
 
 }  // namespace
+
+std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log) {
+  HdMapOptions options;
+  options.ndtCellSizes.clear();
+  return std::make_unique<HdMap>(HdMap::load(log.mapFiles(), options));
+}
 
 std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, const std::vector<BoundaryStretch>& stretches) {
   std::map<int64_t, DrivableAreaVerdict> byId;
@@ -80,12 +87,22 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   SurfaceEvidence evidence = evidenceGrid(log, poses, sweeps, roadPoints, options);
   const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
   size_t frames = 0;
-  for (size_t k = 0; k < sweeps.size(); ++k) {
-    if (cancel && cancel->load()) break;
+  auto label = [&](size_t k) {
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
-    evidence.add(int(sweeps[k]), labelSweep(*log.sweep(sweeps[k]), levelRotation(cityTEgo), roadPoints), cityTEgo, ground);
+    return labelSweep(*log.sweep(sweeps[k]), levelRotation(cityTEgo), roadPoints);
+  };
+  for (size_t k = 0; k < sweeps.size(); k += 2) {
+    if (cancel && cancel->load()) break;
+    std::future<LabelledSweep> second;
+    if (k + 1 < sweeps.size()) second = std::async(std::launch::async, label, k + 1);
+    const LabelledSweep first = label(k);
+    evidence.add(int(sweeps[k]), first, poses.at(log.sweepTimestamps()[sweeps[k]]), ground);
     ++frames;
-    if (progress) progress(k + 1, sweeps.size());
+    if (second.valid()) {
+      evidence.add(int(sweeps[k + 1]), second.get(), poses.at(log.sweepTimestamps()[sweeps[k + 1]]), ground);
+      ++frames;
+    }
+    if (progress) progress(frames, sweeps.size());
   }
   MapChangeReport report = judgeMapChanges(std::move(evidence), map, options);
   report.frames = frames;

@@ -2,6 +2,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "engine/changes/boundary_stretch.h"
@@ -38,8 +39,8 @@ struct MapChangeReport {
 
 // Adds a sweep every options.frameSpacing metres of the poses (city_T_ego, e.g. a run's
 // optimised trajectory; sweeps they do not cover are left out) to the surface evidence,
-// labelled as the road points are, then judges every boundary stretch and finds the missing
-// surfaces. progress(done, total) after each sweep; cancel stops between sweeps (the report
+// labelled as the road points are (two sweeps at a time, added in order), then judges every
+// boundary stretch and finds the missing surfaces. progress(done, total) after each sweep; cancel stops between sweeps (the report
 // then covers what was added). Throws Error for an unreadable sweep file, naming it.
 MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, const PoseTrajectory& poses,
                                  const SweepRoadPointOptions& roadPoints, const ChangeOptions& options,
@@ -48,6 +49,10 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
 
 // The verdicts on evidence already gathered (frames and drivenKm are left at 0).
 MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, const ChangeOptions& options);
+
+// The log's map as the check needs it: the drivable area and its distance field, the ground-height
+// raster (no NDT grids). Throws Error naming the file that is wrong.
+std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log);
 
 // The element verdicts from the stretches (every polygon of the map, in its order).
 std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, const std::vector<BoundaryStretch>& stretches);

@@ -9,7 +9,7 @@ namespace hdprior::test {
 namespace {
 
 const char* const kCommands[] = {"info", "export-map", "run",      "eval", "merge",  "degrade-trajectory",
-                                 "demo", "sim",        "match",    "snapshot", "view", "config", "plot"};
+                                 "demo", "sim",        "match",    "snapshot", "view", "config", "plot", "changes"};
 
 // Every command answers --help with its usage and each option's default, and exits 0.
 TEST(CommandHelp, EveryCommandPrintsItsUsage) {
