@@ -21,6 +21,7 @@ bool hasAnalysisData(const std::string& name, const render::Analysis& analysis) 
   if (name == "comparison_trajectory") return analysis.comparison && !analysis.comparison->optimized.empty();
   if (name == "comparison_match") return analysis.comparison && analysis.comparison->inspection;
   if (name == "measure") return analysis.measure.has_value();
+  if (name == "changes") return analysis.changes != nullptr;
   return false;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/changes/map_change_report.h"
 #include "render/analysis.h"
 #include "render/layer_registry.h"
 #include "ui/layer_visibility.h"
@@ -45,6 +46,7 @@ render::Analysis fullAnalysis() {
   analysis.comparison = render::Comparison{.name = "b", .optimized = onePose()};
   analysis.comparison->inspection.emplace();
   analysis.measure.emplace();
+  analysis.changes = std::make_shared<const MapChangeReport>();
   return analysis;
 }
 
