@@ -14,11 +14,16 @@
 #include "app/eval_logs.h"
 #include "app/eval_merge.h"
 #include "app/option_checks.h"
+#include "engine/changes/change_report_files.h"
+#include "engine/changes/map_change_report.h"
 #include "engine/error.h"
+#include "engine/eval/change_scoring.h"
 #include "engine/eval/eval_shard.h"
 #include "engine/eval/log_evaluation_file.h"
+#include "engine/io/file_bytes.h"
 #include "engine/io/log_map_files.h"
 #include "engine/io/partial_folder.h"
+#include "engine/map/hd_map.h"
 #include "engine/pipeline/log_run.h"
 
 namespace hdprior::app {
@@ -36,6 +41,7 @@ struct Batch {
   std::optional<fs::path> odometryDir;  // --odometry-dir: each log's trajectory file
   OdometryFileOptions odometryFile;
   bool skipExisting = false;
+  bool checkMap = false;  // --check-map
 };
 
 // D/<log id>.tum or D/<log id>.txt; a log with neither (or both) is that log's error.
@@ -47,6 +53,19 @@ fs::path logTrajectoryFile(const fs::path& dir, const std::string& id) {
   return hasTum ? tum : txt;
 }
 
+// The map check along the run's final poses into `dir` (as `hdprior changes` writes it), scored
+// against the log's map_change.json when it has one.
+LogEvaluation::MapCheck checkMap(const ArgoverseLog& log, const PoseTrajectory& poses, const Config& config, const fs::path& dir) {
+  const std::unique_ptr<HdMap> map = loadCheckedMap(log);
+  const MapChangeReport report = detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{});
+  writeChangeReport(dir, report, log.id());
+  const fs::path labels = log.dir() / "map_change.json";
+  const bool labelled = fs::exists(labels);
+  const ChangeScore score = scoreMapChanges(report, labelled ? readMapChangeLabels(labels) : std::vector<MapChangeLabel>{});
+  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score));
+  return {score, labelled};
+}
+
 // The log run into a temporary folder that replaces OUT/<log id> when complete.
 LogEvaluation evaluateLog(const Batch& batch, const fs::path& dir) {
   try {
@@ -54,7 +73,9 @@ LogEvaluation evaluateLog(const Batch& batch, const fs::path& dir) {
     PipelineOptions options = batch.options;
     if (batch.odometryDir) options.givenOdometry = givenOdometryOf(logTrajectoryFile(*batch.odometryDir, log.id()), batch.odometryFile, log);
     PartialFolder folder(batch.out / log.id());
-    LogEvaluation e = logEvaluation(log, runAndWriteLog(log, batch.config, options, folder.path()));
+    const EvaluatedRun run = runAndWriteLog(log, batch.config, options, folder.path());
+    LogEvaluation e = logEvaluation(log, run);
+    if (batch.checkMap) e.mapCheck = checkMap(log, run.run.final(), batch.config, folder.path() / "changes");
     fs::remove(logEvaluationFile(batch.out, log.id()));  // it describes the folder about to be replaced
     folder.publish();
     return e;
@@ -165,7 +186,7 @@ int reportShard(const Batch& batch, EvalShard shard, const fs::path& dir, const 
 struct EvalArguments {
   std::string dir, out, shard, odometryDir;
   long long jobs = std::max(1u, std::thread::hardware_concurrency());
-  bool skipExisting = false, noPrior = false, keepTimeBudget = false;
+  bool skipExisting = false, noPrior = false, keepTimeBudget = false, checkMap = false;
   ConfigArguments config;
   OdometryFileArguments odometryFile;
 };
@@ -175,6 +196,7 @@ int runEval(const EvalArguments& a) {
   batch.out = outputFolder(a.out);
   const std::optional<EvalShard> shard = a.shard.empty() ? std::nullopt : std::optional(parseEvalShard(a.shard));
   batch.skipExisting = a.skipExisting;
+  batch.checkMap = a.checkMap;
   batch.config = configOf(a.config);
   // The matcher's wall-clock budget rejects matches that run long on a loaded machine, which would
   // make a log's result depend on the number of workers and whatever else runs.
@@ -210,6 +232,9 @@ Command addEvalCommand(CLI::App& hdprior) {
       ->type_name("I/N")
       ->check(parsedBy([](const std::string& text) { parseEvalShard(text); }));
   command->add_flag("--skip-existing", a->skipExisting, "keep each log whose stored result says it went through");
+  command->add_flag("--check-map", a->checkMap,
+                    "also the map check (hdprior changes) of each log along its final poses, into OUTDIR/<log id>/changes; "
+                    "the table adds its recall and precision against map_change.json, or its false alarms per km");
   addConfigOption(*command, a->config);
   command->add_flag("--no-prior", a->noPrior, "odometry only: no HD-map priors, no pose graph");
   command->add_flag("--keep-time-budget", a->keepTimeBudget,

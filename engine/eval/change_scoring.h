@@ -1,27 +1,12 @@
 #pragma once
-#include <cmath>
-#include <cstddef>
 #include <string>
 #include <vector>
 
 #include "engine/changes/map_change_report.h"
+#include "engine/eval/change_score.h"
 #include "engine/eval/map_change_labels.h"
 
 namespace hdprior {
-
-// A map check scored against the labels of a simulated log, per element (drivable areas only:
-// the check reads no crossings). A report is a contradicted drivable area (where its contradicted
-// stretches lie) or a missing surface (its outline).
-struct ChangeScore {
-  size_t reports = 0, reportsNearChange = 0;  // reports; those within `match` metres of a labelled change
-  size_t changes = 0, changesFound = 0;       // labelled changes the drive passes within `nearRoute` of; those a report lies within `match` of
-  double drivenKm = 0.0;
-
-  double precision() const { return reports ? double(reportsNearChange) / double(reports) : NAN; }
-  double recall() const { return changes ? double(changesFound) / double(changes) : NAN; }
-  size_t falseAlarms() const { return reports - reportsNearChange; }
-  ChangeScore& operator+=(const ChangeScore& o);
-};
 
 // {"reports", "reports_near_change", "precision", "changes", "changes_found", "recall", "driven_km",
 // "false_alarms_per_km"} (null where undefined).

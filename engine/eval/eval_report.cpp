@@ -135,6 +135,32 @@ std::string perLogCsv(const std::vector<LogEvaluation>& logs) {
   return csv;
 }
 
+namespace {
+
+// The map checks of `eval --check-map`: recall and precision where the logs label their map's
+// changes, false alarms per km where they do not.
+std::string mapCheckMarkdown(const EvalSummary& s) {
+  std::string md;
+  char b[400];
+  if (const auto& c = s.mapCheckLabelled) {
+    std::snprintf(b, sizeof b,
+                  "\nMap check on %zu logs with labelled map changes (drivable areas; 5 m, 15 m from the drive): %zu of %zu changes "
+                  "found (recall %s), %zu of %zu reports near a change (precision %s), %.2f false alarms per km over %.2f km.\n",
+                  s.mapCheckLabelledLogs, c->changesFound, c->changes, c->changes ? number(c->recall(), 2).c_str() : "n/a",
+                  c->reportsNearChange, c->reports, c->reports ? number(c->precision(), 2).c_str() : "n/a",
+                  c->drivenKm > 0 ? double(c->falseAlarms()) / c->drivenKm : 0.0, c->drivenKm);
+    md += b;
+  }
+  if (const auto& c = s.mapCheckUnlabelled) {
+    std::snprintf(b, sizeof b, "\nMap check on %zu logs without labelled changes: %zu reports (each a false alarm on a current map) over %.2f km, %.2f per km.\n",
+                  s.mapCheckUnlabelledLogs, c->reports, c->drivenKm, c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);
+    md += b;
+  }
+  return md;
+}
+
+}  // namespace
+
 std::string summaryMarkdown(const EvalSummary& s) {
   std::string md = averagingLine(s) +
                    " Along and lateral: the rmse of the error along and across the true heading (the drivable area "
@@ -147,6 +173,7 @@ std::string summaryMarkdown(const EvalSummary& s) {
     md += " |\n";
   });
   if (s.optimized) md += calibrationMarkdown(s);
+  md += mapCheckMarkdown(s);
   return md;
 }
 

@@ -56,6 +56,12 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
       accumulate(s.optimizedSplit, log.optimized->ate);
     }
     priors.insert(priors.end(), log.priorErrors.begin(), log.priorErrors.end());
+    if (log.mapCheck) {
+      std::optional<ChangeScore>& sum = log.mapCheck->labelled ? s.mapCheckLabelled : s.mapCheckUnlabelled;
+      if (!sum) sum.emplace();
+      *sum += log.mapCheck->score;
+      ++(log.mapCheck->labelled ? s.mapCheckLabelledLogs : s.mapCheckUnlabelledLogs);
+    }
     if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {
       const double ratio = log.optimized->ate.translation.rmse / log.odometry->ate.translation.rmse;
       s.worstRatio = std::max(s.worstRatio, ratio);

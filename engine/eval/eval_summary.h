@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/eval/change_score.h"
 #include "engine/eval/match_calibration.h"
 #include "engine/eval/trajectory_errors.h"
 
@@ -20,6 +21,13 @@ struct LogEvaluation {
   size_t matchesAccepted = 0, matchesDegenerate = 0, matchesRejected = 0;
   std::vector<MatchErrorSample> priorErrors;  // the priors the graph used, against the truth
   double pipelineSeconds = 0;
+  // With `eval --check-map`: the map check's score (every report a false alarm when the log has no
+  // map_change.json; `labelled` when it has one).
+  struct MapCheck {
+    ChangeScore score;
+    bool labelled = false;
+  };
+  std::optional<MapCheck> mapCheck;
   std::string error;  // empty when the log went through
 
   bool ok() const { return error.empty(); }
@@ -41,6 +49,9 @@ struct EvalSummary {
   MatchCalibration priors;
   size_t logsWorse = 0;
   double worstRatio = 0.0;
+  // The map checks summed over the logs with labelled changes and over those without.
+  std::optional<ChangeScore> mapCheckLabelled, mapCheckUnlabelled;
+  size_t mapCheckLabelledLogs = 0, mapCheckUnlabelledLogs = 0;
 };
 EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);
 

@@ -129,6 +129,11 @@ void writeLogEvaluation(const std::filesystem::path& file, const LogEvaluation& 
     for (const MatchErrorSample& s : log.priorErrors) priors.push_back(priorErrorJson(s));
     j["prior_errors"] = priors;
     j["pipeline_s"] = log.pipelineSeconds;
+    if (log.mapCheck) {
+      const ChangeScore& c = log.mapCheck->score;
+      j["map_check"] = {{"labelled", log.mapCheck->labelled}, {"reports", c.reports}, {"reports_near_change", c.reportsNearChange},
+                        {"changes", c.changes}, {"changes_found", c.changesFound}, {"driven_km", c.drivenKm}};
+    }
   }
   writeFileAtomically(file, j.dump(1) + "\n");
 }
@@ -158,6 +163,15 @@ LogEvaluation readLogEvaluation(const std::filesystem::path& file) {
                                r.vector3(p, "sigma", "the result.prior_errors[]", inf)});
   }
   log.pipelineSeconds = r.number(j, "pipeline_s", "the result");
+  if (j.contains("map_check")) {
+    const json& m = r.member(j, "map_check", "the result");
+    const json& labelled = r.member(m, "labelled", "the result.map_check");
+    if (!labelled.is_boolean()) throw Error(file.string(), "the result.map_check.labelled is not true or false");
+    log.mapCheck = LogEvaluation::MapCheck{{r.count(m, "reports", "the result.map_check"), r.count(m, "reports_near_change", "the result.map_check"),
+                                            r.count(m, "changes", "the result.map_check"), r.count(m, "changes_found", "the result.map_check"),
+                                            r.number(m, "driven_km", "the result.map_check")},
+                                           labelled.get<bool>()};
+  }
   return log;
 }
 

@@ -1,0 +1,60 @@
+// `hdprior eval --check-map`: each log's map check beside its run, scored against the log's
+// map_change.json where it has one (a street drawn narrower, labelled), counted as false alarms
+// where it has none (an unchanged map), and both in the table.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/argoverse_log.h"
+#include "engine/io/file_bytes.h"
+#include "engine/io/vector_map.h"
+#include "narrowed_street.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace {
+namespace fs = std::filesystem;
+
+// Labels the log's narrowed drivable area as changed: where it lies in the written map.
+void labelChange(const fs::path& log, int64_t id) {
+  const VectorMap map = readVectorMap(ArgoverseLog(log).mapFiles().vectorMap);
+  nlohmann::json outline = nlohmann::json::array();
+  for (const DrivableArea& a : map.drivableAreas)
+    if (a.id == id)
+      for (const Eigen::Vector3d& v : a.areaBoundary) outline.push_back({v.x(), v.y()});
+  const nlohmann::json labels = {
+      {"fraction", 0.3},
+      {"within_m", nullptr},
+      {"changes",
+       {{{"element", "drivable_area"}, {"id", id}, {"change", "shifted"}, {"route_distance_m", 0.0}, {"map_outline", outline}}}}};
+  writeFileAtomically(log / "map_change.json", labels.dump());
+}
+
+TEST(EvalCheckMap, ScoresTheLabelledLogAndCountsFalseAlarmsOnTheOther) {
+  const fs::path dir = test::freshOutputDir("eval_check_map");
+  const fs::path changed = test::copySharedTownDrive(1, 7, 8.0, dir / "logs" / "changed");
+  const fs::path current = test::copySharedTownDrive(2, 1, 6.0, dir / "logs" / "current");
+  labelChange(changed, test::narrowStreetAtStart(changed, 2.5));
+  const fs::path out = dir / "out";
+  const test::CommandResult r = test::runHdprior("eval " + test::quoted(dir / "logs") + " --out " + test::quoted(out) + " -j 2 --check-map");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const fs::path& log : {changed, current}) {
+    const std::string id = ArgoverseLog(log).id();
+    EXPECT_TRUE(fs::exists(out / id / "changes" / "changes.geojson")) << id;
+    EXPECT_TRUE(fs::exists(out / id / "changes" / "summary.json")) << id;
+    const nlohmann::json result = nlohmann::json::parse(test::readFileText(out / (id + ".result.json")));
+    ASSERT_TRUE(result.contains("map_check")) << result.dump();
+    EXPECT_EQ(result["map_check"]["labelled"].get<bool>(), log == changed);
+  }
+  EXPECT_TRUE(fs::exists(out / ArgoverseLog(changed).id() / "changes" / "score.json"));
+  const std::string table = test::readFileText(out / "table.md");
+  EXPECT_NE(table.find("Map check on 1 logs with labelled map changes"), std::string::npos) << table;
+  EXPECT_NE(table.find("1 of 1 changes found (recall 1.00)"), std::string::npos) << table;
+  EXPECT_NE(table.find("Map check on 1 logs without labelled changes: 0 reports"), std::string::npos) << table;
+}
+
+}  // namespace
+}  // namespace hdprior
