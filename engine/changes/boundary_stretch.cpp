@@ -66,6 +66,13 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   }
   const double share = double(s.contradicted) / double(s.observed);
   const bool contradicted = s.contradicted >= o.minSamples && share >= o.contradictedShare;
+  // A kerb inside the boundary is also what a raised island the map paints over, or a road the walk
+  // labelled in patches, shows: it takes twice the samples, and short of them nothing is said.
+  if (contradicted && median(against) < 0 && s.contradicted < 2 * o.minSamples) {
+    s.offset = median(against);
+    s.evidence = "kerb_inside";
+    return s;
+  }
   s.verdict = contradicted ? MapVerdict::Contradicted : MapVerdict::Consistent;
   s.offset = median(contradicted ? against : observed);
   s.evidence = evidenceOf(s.offset, contradicted, o);
