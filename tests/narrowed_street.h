@@ -10,17 +10,9 @@
 #include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/vector_map.h"
+#include "engine/sim/polygon2d.h"
 
 namespace hdprior::test {
-
-inline bool insidePolygon(const Polyline3& polygon, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Eigen::Vector3d &a = polygon[i], &b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) in = !in;
-  }
-  return in;
-}
 
 // Returns the narrowed drivable area's id.
 inline int64_t narrowStreetAtStart(const std::filesystem::path& log, double metres) {
@@ -30,7 +22,7 @@ inline int64_t narrowStreetAtStart(const std::filesystem::path& log, double metr
   const SE3 first = opened.cityTEgoAtSweeps().poses().front();
   const Eigen::Vector2d ego = first.translation().head<2>(), left = first.linear().col(1).head<2>().normalized();
   auto area = std::find_if(map.drivableAreas.begin(), map.drivableAreas.end(),
-                           [&](const DrivableArea& a) { return insidePolygon(a.areaBoundary, ego); });
+                           [&](const DrivableArea& a) { return ringContains(ringOf(a.areaBoundary), ego); });
   if (area == map.drivableAreas.end()) throw Error(log.string(), "no drivable area under the first pose");
   for (Eigen::Vector3d& v : area->areaBoundary)
     if ((v.head<2>() - ego).dot(left) > 1.0) v.head<2>() -= metres * left;

@@ -3,21 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/sim/polygon2d.h"
+
 namespace hdprior {
 
 namespace {
 
 Eigen::Vector2d vertex(const Polyline3& polygon, size_t i) { return polygon[i % polygon.size()].head<2>(); }
-
-// Twice the signed area: positive for counter-clockwise vertices.
-double signedArea2(const Polyline3& polygon) {
-  double a = 0.0;
-  for (size_t i = 0; i < polygon.size(); ++i) {
-    const Eigen::Vector2d p = vertex(polygon, i), q = vertex(polygon, i + 1);
-    a += p.x() * q.y() - q.x() * p.y();
-  }
-  return a;
-}
 
 }  // namespace
 
@@ -29,7 +21,7 @@ double perimeter(const Polyline3& polygon) {
 
 std::vector<BoundarySample> sampleBoundary(const Polyline3& polygon, double spacing) {
   std::vector<BoundarySample> samples;
-  const double turn = signedArea2(polygon) >= 0.0 ? 1.0 : -1.0;  // outwards is right of a CCW edge
+  const double turn = signedArea(ringOf(polygon)) >= 0.0 ? 1.0 : -1.0;  // outwards is right of a CCW edge
   double arc = 0.0;
   for (size_t i = 0; i < polygon.size(); ++i) {
     const Eigen::Vector2d p = vertex(polygon, i), q = vertex(polygon, i + 1);

@@ -13,9 +13,6 @@ struct ChangeOptions {
   // A kerb farther than this from the map's boundary contradicts it (the map's error, the poses'
   // error and a cell's width stay below it).
   double tolerance = 1.25;
-  // Road going on farther than this beyond the boundary is surface the map lacks (a missing area),
-  // not a boundary drawn in the wrong place.
-  double openDepth = 4.0;
   int minSamples = 5;              // a stretch needs this many observed (contradicting) samples for a verdict
   double contradictedShare = 0.4;  // of its observed samples, for the stretch to be contradicted
   double seamDepth = 0.5;       // a sample this far inside the union of the polygons is a seam between two

@@ -5,45 +5,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/sim/polygon2d.h"
+
 namespace hdprior {
 
 namespace {
 
 using Line = std::vector<Eigen::Vector2d>;
 
-double pointSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d d = b - a;
-  const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
-
-// The segments of a line (closed: back to its first point).
-std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments(const Line& line, bool closed) {
-  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> out;
-  for (size_t i = 0; i + 1 < line.size(); ++i) out.emplace_back(line[i], line[i + 1]);
-  if (closed && line.size() > 2) out.emplace_back(line.back(), line.front());
-  if (line.size() == 1) out.emplace_back(line[0], line[0]);
-  return out;
-}
-
-bool inside(const Line& polygon, const Eigen::Vector2d& p) {
-  bool in = false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Eigen::Vector2d &a = polygon[i], &b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x()) in = !in;
-  }
-  return in;
-}
-
 // The nearest distance between two lines, 0 where a point of one lies inside the other (a polygon).
 double distance(const Line& a, bool aClosed, const Line& b, bool bClosed) {
-  if (aClosed && b.size() > 0 && inside(a, b.front())) return 0.0;
-  if (bClosed && a.size() > 0 && inside(b, a.front())) return 0.0;
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& [p, q] : segments(a, aClosed))
-    for (const auto& [r, s] : segments(b, bClosed))
-      best = std::min({best, pointSegment(p, r, s), pointSegment(q, r, s), pointSegment(r, p, q), pointSegment(s, p, q)});
-  return best;
+  if (aClosed && !b.empty() && ringContains(a, b.front())) return 0.0;
+  if (bClosed && !a.empty() && ringContains(b, a.front())) return 0.0;
+  Line aLine = a;
+  if (aClosed && a.size() > 2) aLine.push_back(a.front());
+  return polylineDistance(aLine, b, bClosed);
 }
 
 struct Place {
