@@ -1,6 +1,6 @@
 // `hdprior changes` on a simulated drive: over its own map nothing is contradicted; over a copy
 // of the map with the street the drive starts on narrowed, that street is; bad input is one line
-// and exit status 2 with nothing written.
+// and exit status 2 with nothing written. And on the real log over its real map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,6 +78,22 @@ TEST_F(ChangesCommand, BadInputIsOneLineAndNothingIsWritten) {
       "optimized.tum"));
   EXPECT_FALSE(fs::exists(out / "changes.geojson"));
   EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+// The real log over its own map (one sweep used: the two are 7 cm apart): the kerbs the sweep shows
+// agree with the drivable area, nothing is contradicted and no surface is missing.
+TEST(ChangesCommandReal, TheRealSweepAgreesWithItsMap) {
+  const fs::path dir = test::freshOutputDir("changes_real");
+  const test::CommandResult run = test::runHdprior("run " + test::quoted(test::sharedLog()) + " --out " + test::quoted(dir / "run"));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const test::CommandResult r = test::runHdprior("changes " + test::quoted(test::sharedLog()) + " --run " + test::quoted(dir / "run") +
+                                                 " --out " + test::quoted(dir / "changes"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json s = summaryOf(dir / "changes");
+  EXPECT_GE(s["drivable_areas"]["consistent"].get<int>(), 1) << s.dump();
+  EXPECT_GT(s["observed_boundary_km"].get<double>(), 0.02) << s.dump();
+  EXPECT_EQ(s["drivable_areas"]["contradicted"].get<int>(), 0) << s.dump();
+  EXPECT_EQ(s["missing_surfaces"].get<int>(), 0) << s.dump();
 }
 
 }  // namespace
