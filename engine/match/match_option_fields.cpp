@@ -20,7 +20,7 @@ std::vector<OptionField> optionFields(MatchOptions& o) {
       {"min_points", &o.minPoints, "[1, 10000000]", "", "a match needs this many road points"},
       {"min_inlier_ratio", &o.minInlierRatio, "[0, 1]", "", "share of the road points that must land on the drivable area"},
       {"prediction_sigma", &o.predictionSigma, "(0, 1000]", "m, m, deg", "the odometry prediction's sigma (x, y, yaw) for the gate"},
-      {"gate_chi2", &o.gateChi2, "(0, 1000000000]", "", "a match farther than this (chi-square, 3 dof) from the prediction is rejected"},
+      {"gate_chi2", &o.gateChi2, "(0, 1000000000]", "", "a match farther than this (chi-square, 3 dof) from the prediction is rejected; in a run it goes in only with re-anchoring"},
       {"stale_region_size", &o.staleRegionSize, "[0.5, 1000]", "m", "square regions in which a stale map is looked for"},
       {"stale_distance", &o.staleDistance, "(0, 1000]", "m", "points this far outside the drivable area at the prediction ..."},
       {"stale_distance_per_metre", &o.staleDistancePerMetre, "[0, 10]", "m/m", "... plus this per metre of range ..."},

@@ -52,6 +52,7 @@ void DriftModelLikelihood::observe(const PosePrior& prior) {
 }
 
 void DriftModelLikelihood::restartAt(const PosePrior& prior) {
+  restarted_ = true;
   for (PlanarKalman& f : filters_) {
     f.widen(kForgottenPose);
     f.update(f.innovation(prior));
@@ -65,12 +66,15 @@ std::vector<DriftModelLikelihood::Candidate> DriftModelLikelihood::scored() cons
 }
 
 size_t DriftModelLikelihood::pick() const {
+  // After a re-anchor the odometry is known to have been metres off: no model tighter than the configured.
+  auto allowed = [&](const Candidate& c) { return !restarted_ || c.factor >= 1.0; };
   double best = -std::numeric_limits<double>::infinity();
-  for (const Candidate& c : candidates_) best = std::max(best, c.logLikelihood);
+  for (const Candidate& c : candidates_)
+    if (allowed(c)) best = std::max(best, c.logLikelihood);
   // Within the margin the least drift.
   size_t pick = candidates_.size();
   for (size_t i = 0; i < candidates_.size(); ++i) {
-    if (candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
+    if (!allowed(candidates_[i]) || candidates_[i].logLikelihood < best - configured_.driftModelMarginNats) continue;
     if (pick == candidates_.size() || candidates_[i].factor < candidates_[pick].factor) pick = i;
   }
   return pick;

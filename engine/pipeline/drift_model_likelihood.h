@@ -52,6 +52,7 @@ class DriftModelLikelihood {
   PoseGraphOptions configured_;
   std::vector<Candidate> candidates_;
   std::vector<PlanarKalman> filters_;
+  bool restarted_ = false;
 };
 
 }  // namespace hdprior

@@ -14,12 +14,12 @@ void InnovationGate::predict(const Eigen::Vector3d& latestPose, const SE3& previ
   if (challenger_) challenger_->predict(previousTThis, stepInformation);
 }
 
-InnovationGate::Verdict InnovationGate::judge(size_t keyframe, const PosePrior& prior) {
+InnovationGate::Verdict InnovationGate::judge(size_t keyframe, const PosePrior& prior, bool outsidePrediction) {
   Verdict v;
   const PlanarKalman::Innovation t = gate_.innovation(prior);
   v.chi2 = t.chi2;
   if (probability_ > 0.0 && t.dof > 0) v.quantile = chiSquareQuantile(probability_, t.dof);
-  if (v.quantile > 0.0 && t.chi2 > v.quantile) {
+  if (outsidePrediction || (v.quantile > 0.0 && t.chi2 > v.quantile)) {
     v.admitted = followGatedRun(keyframe, prior, v);
     return v;
   }

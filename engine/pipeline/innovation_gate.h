@@ -37,7 +37,8 @@ class InnovationGate {
     double quantile = 0.0;            // the chi-square quantile chi2 is held against (0: no gate)
     std::vector<size_t> reanchored;   // admitted: the earlier gated priors of the run that go in with it
   };
-  Verdict judge(size_t keyframe, const PosePrior& prior);
+  // `outsidePrediction`: the prior is held out as if its chi-square were above the quantile.
+  Verdict judge(size_t keyframe, const PosePrior& prior, bool outsidePrediction = false);
 
  private:
   bool followGatedRun(size_t keyframe, const PosePrior& prior, Verdict& verdict);

@@ -43,8 +43,12 @@ PriorConstraint constraintOf(const MatchResult& match) {
 
 PriorConstraint constraintOf(const KeyframeMatch& k) {
   if (k.gated) {
-    char reason[64];
-    std::snprintf(reason, sizeof reason, "chi2 %.1f > %.1f", k.innovationChi2, k.gateQuantile);
+    char reason[96];
+    if (k.outsidePrediction) {
+      std::snprintf(reason, sizeof reason, "outside the prediction: chi2 %.1f", k.match.gateChi2);
+    } else {
+      std::snprintf(reason, sizeof reason, "chi2 %.1f > %.1f", k.innovationChi2, k.gateQuantile);
+    }
     PriorConstraint c = constraintOf(k.match);
     c.kind = PriorConstraint::Kind::Gated;
     c.reason = reason;

@@ -18,7 +18,7 @@ struct PriorConstraint {
   enum class Kind { Fixes, Rejected, Gated };
   Kind kind = Kind::Rejected;
   bool along = false, lateral = false, yaw = false;
-  std::string reason;  // Rejected: the matcher's reason; Gated: "chi2 X > Q"
+  std::string reason;  // Rejected: the matcher's reason; Gated: "chi2 X > Q" or "outside the prediction: chi2 X"
 
   bool full() const { return kind == Kind::Fixes && along && lateral && yaw; }
   // "full", "lateral + yaw", "lateral", "yaw", "along + lateral", ...; "rejected"; "gated".

@@ -22,11 +22,19 @@ const Config& checked(const Config& config) {
   return config;
 }
 
+// The stage's matcher leaves the fixed prediction gate to the stage: a match outside it is still
+// made a prior, which only a run of agreeing priors can let in (InnovationGate), so that an odometry
+// slip of metres does not shut out the right matches after it.
+MatchOptions withoutPredictionGate(MatchOptions options) {
+  options.gateChi2 = 1e9;  // the largest the options allow
+  return options;
+}
+
 }  // namespace
 
 PriorStage::PriorStage(const HdMap& map, const Config& config, const SE3& cityTOdom, bool givenPoses)
     : map_(map), config_(checked(config)), cityTOdom_(cityTOdom), givenPoses_(givenPoses),
-      matcher_(std::make_unique<MapMatcher>(map, config.match)), graph_(std::make_unique<PoseGraph>(config.graph)) {
+      matcher_(std::make_unique<MapMatcher>(map, withoutPredictionGate(config.match))), graph_(std::make_unique<PoseGraph>(config.graph)) {
   if (!map.hasGroundHeight()) throw Error("HD map", "has no ground-height raster (the altitude prior needs it)");
   config_.graph = odometryDriftModel(config.graph, givenPoses_);
 }
@@ -44,7 +52,7 @@ KeyframeSweep keyframeSweep(const Odometry& odometry, size_t keyframe, const SE3
 }
 
 bool PriorStage::gatePrior(KeyframeMatch& m) {
-  const InnovationGate::Verdict v = gate_.judge(m.keyframe, m.prior);
+  const InnovationGate::Verdict v = gate_.judge(m.keyframe, m.prior, m.outsidePrediction);
   m.innovationChi2 = v.chi2;
   m.gateQuantile = v.quantile;
   m.gated = !v.admitted;
@@ -90,6 +98,7 @@ void PriorStage::addKeyframe(const Odometry& odometry, const SweepOf& sweepOf) {
   start = std::chrono::steady_clock::now();
   m.match = matcher_->match(points.road, planarPose(m.predicted), points.curb);
   m.hasPrior = m.match.status != MatchStatus::Rejected;
+  m.outsidePrediction = m.hasPrior && m.match.gateChi2 > config_.match.gateChi2;
   bool reanchored = false;
   if (m.hasPrior) {
     m.prior = makePosePrior(m.match, m.predicted, map_.groundHeight(), config_.prior);

@@ -35,6 +35,9 @@ struct KeyframeMatch {
   PosePrior prior;
   double innovationChi2 = 0.0;      // the prior against the graph's prediction (PlanarKalman); 0 without a prior
   bool gated = false;               // the innovation gate left the prior out (`match` is as the matcher gave it)
+  // The match moved farther from the prediction than the matcher's fixed gate (match.gate_chi2) allows:
+  // the prior goes in only with a run of gated priors that agree with it.
+  bool outsidePrediction = false;
   double gateQuantile = 0.0;        // the gate's chi-square quantile for the prior (0: no gate)
 };
 

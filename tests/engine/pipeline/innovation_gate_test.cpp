@@ -28,12 +28,14 @@ PosePrior lateralPrior(double x, double y) {
 
 // A straight drive of 2 m keyframes. The graph's pose at keyframe k is (2k, graphY(k)); the prior at
 // k says y = priorY(k). Returns each keyframe's verdict (keyframe 0 is the start, no prior).
-std::vector<InnovationGate::Verdict> drive(int keyframes, int reanchorPriors, double (*graphY)(int), double (*priorY)(int)) {
+// `outsidePrediction(k)`: the matcher found prior k outside its fixed prediction gate.
+std::vector<InnovationGate::Verdict> drive(int keyframes, int reanchorPriors, double (*graphY)(int), double (*priorY)(int),
+                                           bool (*outsidePrediction)(int) = nullptr) {
   InnovationGate gate(Eigen::Vector3d::Zero(), 0.0, 0.99, reanchorPriors);
   std::vector<InnovationGate::Verdict> verdicts(1);
   for (int k = 1; k < keyframes; ++k) {
     gate.predict(Eigen::Vector3d(2.0 * (k - 1), graphY(k - 1), 0.0), forward(2.0), stepInformation());
-    verdicts.push_back(gate.judge(size_t(k), lateralPrior(2.0 * k, priorY(k))));
+    verdicts.push_back(gate.judge(size_t(k), lateralPrior(2.0 * k, priorY(k)), outsidePrediction && outsidePrediction(k)));
   }
   return verdicts;
 }
@@ -57,6 +59,21 @@ TEST(InnovationGate, AgreeingPriorsOutvoteAPredictionThatSlipped) {
 TEST(InnovationGate, WithoutReanchoringTheSlipShutsEveryPriorOut) {
   const auto v = drive(12, 0, slipAfterFour, onTheRoad);
   for (int k = 6; k < 12; ++k) EXPECT_FALSE(v[k].admitted) << k;
+}
+
+// Priors the matcher found outside its fixed prediction gate never go in alone, even where the
+// gate's own prediction would take them; a run of them that agree goes in as any gated run.
+bool fromSixOn(int k) { return k >= 6; }
+
+TEST(InnovationGate, PriorsOutsideThePredictionGoInOnlyAsARun) {
+  const auto v = drive(12, 3, onTheRoad, onTheRoad, fromSixOn);
+  for (int k = 1; k <= 5; ++k) EXPECT_TRUE(v[k].admitted) << k;
+  EXPECT_FALSE(v[6].admitted);
+  EXPECT_LT(v[6].chi2, v[6].quantile);
+  EXPECT_FALSE(v[7].admitted);
+  EXPECT_TRUE(v[8].admitted);
+  EXPECT_EQ(v[8].reanchored, (std::vector<size_t>{6, 7}));
+  EXPECT_TRUE(drive(12, 0, onTheRoad, onTheRoad, fromSixOn)[8].admitted == false);
 }
 
 // Wrong priors that disagree with one another (a plateau the Newton path wanders along) never form a run.

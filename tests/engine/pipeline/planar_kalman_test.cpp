@@ -142,6 +142,20 @@ TEST(DriftModelLikelihood, AMarginKeepsTheTightestModelWhereALooserOneIsBarelyLi
   EXPECT_GE(driftRun(0.02 * kDegree, 2.0).likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
 }
 
+// After a re-anchor (the odometry was metres off somewhere) the model is never tighter than the
+// configured one: a right odometry is what the priors after it cannot tell from one that slipped.
+TEST(DriftModelLikelihood, AfterARestartTheModelIsNoTighterThanTheConfigured) {
+  const PoseGraphOptions configured;
+  DriftModelLikelihood exact = driftRun(0.0);
+  ASSERT_LT(exact.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  exact.restartAt(lateralPrior(202.0, 0.0, 0.1, 0.0));
+  EXPECT_EQ(exact.likeliest().odometryRotationSigmaDegPerM, configured.odometryRotationSigmaDegPerM);
+  DriftModelLikelihood drifting = driftRun(0.02 * kDegree);
+  const double before = drifting.likeliest().odometryRotationSigmaDegPerM;
+  drifting.restartAt(lateralPrior(202.0, 0.0, 0.1, 0.0));
+  EXPECT_EQ(drifting.likeliest().odometryRotationSigmaDegPerM, before);
+}
+
 // scored() is what metrics.json shows: each candidate's log-likelihood, and one chosen, the one the
 // final solve takes (the tightest within the margin of the likeliest).
 TEST(DriftModelLikelihood, ScoredShowsEveryCandidateAndTheOneChosen) {

@@ -49,6 +49,10 @@ TEST(PriorConstraint, RejectedAndGatedCarryTheirReasonAndFigures) {
   gated.innovationChi2 = 14.23;
   gated.gateQuantile = 9.21;
   EXPECT_EQ(constraintOf(gated).label(), "gated: chi2 14.2 > 9.2");
+  KeyframeMatch outside = gated;
+  outside.outsidePrediction = true;
+  outside.match.gateChi2 = 15.61;
+  EXPECT_EQ(constraintOf(outside).label(), "gated: outside the prediction: chi2 15.6");
   EXPECT_TRUE(constraintOf(gated).lateral);
 
   const std::vector<PriorConstraint> all = {fixedDirections(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()),
