@@ -7,10 +7,10 @@
 #include <filesystem>
 
 #include "engine/error.h"
+#include "engine/geom/polygon2d.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/vector_map.h"
-#include "engine/sim/polygon2d.h"
 
 namespace hdprior::test {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/sim/polygon2d.h"
+#include "engine/geom/polygon2d.h"
 
 namespace hdprior {
 

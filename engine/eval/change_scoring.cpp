@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/sim/polygon2d.h"
+#include "engine/geom/polygon2d.h"
 
 namespace hdprior {
 

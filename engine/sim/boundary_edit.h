@@ -2,7 +2,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/sim/polygon2d.h"
+#include "engine/geom/polygon2d.h"
 
 namespace hdprior {
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <vector>
 
+#include "engine/geom/polygon2d.h"
 #include "engine/io/vector_map.h"
-#include "engine/sim/polygon2d.h"
 
 namespace hdprior {
 

@@ -7,8 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/geom/polygon2d.h"
 #include "engine/io/vector_map.h"
-#include "engine/sim/polygon2d.h"
 
 namespace hdprior {
 

@@ -1,4 +1,4 @@
-#include "engine/sim/polygon2d.h"
+#include "engine/geom/polygon2d.h"
 
 #include <algorithm>
 #include <cmath>
