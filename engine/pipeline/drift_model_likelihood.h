@@ -30,7 +30,8 @@ class DriftModelLikelihood {
   void step(const Keyframe& keyframe);
   void observe(const PosePrior& prior);
   // After an odometry slip the innovation gate re-anchored on (InnovationGate): each filter starts
-  // again at the prior, which counts for no candidate: a slip is not drift.
+  // again at the prior, which counts for no candidate: a slip is not drift. From then on no
+  // candidate tighter than the configured model is picked.
   void restartAt(const PosePrior& prior);
 
   // The configured options with the likeliest candidate's per-metre sigmas and map error length.
