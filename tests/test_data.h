@@ -15,9 +15,11 @@ std::filesystem::path sourceDir();
 
 // A fresh, empty directory for one test's outputs, under the build tree.
 std::filesystem::path freshOutputDir(const std::string& name);
-// A short simulated town drive (`hdprior sim --town town --seed seed --seconds seconds`) in a fresh
-// folder named after `name` and this process (ctest runs each test in its own process, in
-// parallel); returns the folder it was written to and the log's folder in it.
+// A fresh directory named after `name` and this process (ctest runs the tests of one binary in
+// parallel processes), removed when the process ends with every test passed.
+std::filesystem::path processOutputDir(const std::string& name);
+// A short simulated town drive (`hdprior sim --town town --seed seed --seconds seconds`) in
+// processOutputDir(name); returns the folder it was written to and the log's folder in it.
 struct SimulatedDrive {
   std::filesystem::path folder, log;
 };

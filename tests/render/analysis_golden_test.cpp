@@ -72,7 +72,7 @@ class AnalysisGolden : public ::testing::Test {
       sim.townSeed = 2;
       sim.seed = 3;
       sim.seconds = 4.0;
-      sim.outDir = freshOutputDir("analysis_golden_" + std::to_string(::getpid()));
+      sim.outDir = processOutputDir("analysis_golden");
       return AnalysedLog(simulateLog(sim).dir, 7);
     }();
     return log;

@@ -78,8 +78,7 @@ void expectNothingTemporary(const fs::path& out) {
 class EvalCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // ctest runs each test in its own process, in parallel: one folder per process.
-    dir_ = new fs::path(test::freshOutputDir("eval_logs_" + std::to_string(::getpid())));
+    dir_ = new fs::path(test::processOutputDir("eval_logs"));
     fs::path first;
     for (int town : {1, 2}) {
       // simulateLog of town `town`, seed 1, 6 s, simulated once per ctest run and copied here.

@@ -40,7 +40,7 @@ const SimulatedDrive& drive() {
     sim.townSeed = 2;
     sim.seed = 3;
     sim.seconds = 6.0;
-    sim.outDir = test::freshOutputDir("cost_landscape_sim_" + std::to_string(::getpid()));
+    sim.outDir = test::processOutputDir("cost_landscape_sim");
     d.log = std::make_unique<ArgoverseLog>(simulateLog(sim).dir);
     d.config.match.timeBudgetMs = 1e6;
     d.map = loadPriorMap(*d.log, d.config);
