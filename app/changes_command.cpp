@@ -52,11 +52,15 @@ int runChanges(const ChangesArguments& a) {
   writeChangeReport(out, report, log.id());
   std::string scored;
   if (const std::filesystem::path labels = log.dir() / "map_change.json"; std::filesystem::exists(labels)) {
-    const ChangeScore score = scoreMapChanges(report, readMapChangeLabels(labels));
-    writeFileAtomically(out / "score.json", changeScoreJson(score));
-    char b[200];
-    std::snprintf(b, sizeof b, "; against map_change.json: %zu of %zu reports near a change, %zu of %zu changes found", score.reportsNearChange,
-                  score.reports, score.changesFound, score.changes);
+    const std::vector<MapChangeLabel> changes = readMapChangeLabels(labels);
+    const ChangeScore score = scoreMapChanges(report, changes);
+    const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
+    writeFileAtomically(out / "score.json", changeScoreJson(score, crossings));
+    char b[300];
+    std::snprintf(b, sizeof b,
+                  "; against map_change.json: %zu of %zu reports near a change, %zu of %zu changes found (crossings: %zu of %zu, %zu of %zu)",
+                  score.reportsNearChange, score.reports, score.changesFound, score.changes, crossings.reportsNearChange,
+                  crossings.reports, crossings.changesFound, crossings.changes);
     scored = b;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -65,11 +69,17 @@ int runChanges(const ChangesArguments& a) {
     contradicted += v.verdict == MapVerdict::Contradicted;
     consistent += v.verdict == MapVerdict::Consistent;
   }
+  size_t crossingsContradicted = 0, crossingsConsistent = 0;
+  for (const CrossingVerdict& c : report.crossings) {
+    crossingsContradicted += c.verdict == MapVerdict::Contradicted;
+    crossingsConsistent += c.verdict == MapVerdict::Consistent;
+  }
   std::printf("changes %s: %zu sweeps over %.2f km, %.2f km of boundary observed; drivable areas: %zu contradicted, "
-              "%zu consistent, %zu unobserved; %zu missing surfaces%s; %.1f s; wrote %s\n",
+              "%zu consistent, %zu unobserved; %zu missing surfaces; crossings: %zu contradicted, %zu consistent, "
+              "%zu missing%s; %.1f s; wrote %s\n",
               log.id().c_str(), report.frames, report.drivenKm, report.observedBoundaryKm, contradicted, consistent,
-              report.drivableAreas.size() - contradicted - consistent, report.missing.size(), scored.c_str(), seconds,
-              out.string().c_str());
+              report.drivableAreas.size() - contradicted - consistent, report.missing.size(), crossingsContradicted,
+              crossingsConsistent, report.missingCrossings.size(), scored.c_str(), seconds, out.string().c_str());
   return 0;
 }
 

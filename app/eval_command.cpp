@@ -61,9 +61,11 @@ LogEvaluation::MapCheck checkMap(const ArgoverseLog& log, const PoseTrajectory& 
   writeChangeReport(dir, report, log.id());
   const fs::path labels = log.dir() / "map_change.json";
   const bool labelled = fs::exists(labels);
-  const ChangeScore score = scoreMapChanges(report, labelled ? readMapChangeLabels(labels) : std::vector<MapChangeLabel>{});
-  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score));
-  return {score, labelled};
+  const std::vector<MapChangeLabel> changes = labelled ? readMapChangeLabels(labels) : std::vector<MapChangeLabel>{};
+  const ChangeScore score = scoreMapChanges(report, changes);
+  const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
+  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score, crossings));
+  return {score, crossings, labelled};
 }
 
 // The log run into a temporary folder that replaces OUT/<log id> when complete.

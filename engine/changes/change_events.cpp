@@ -38,6 +38,19 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
                   m.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
   }
+  for (const CrossingVerdict& c : report.crossings) {
+    if (c.verdict != MapVerdict::Contradicted || c.bestFrame < 0) continue;
+    char b[160];
+    std::snprintf(b, sizeof b, "crossing %lld: no paint in %d road points near the lidar (confidence %.2f)", (long long)c.id,
+                  c.roadPoints, c.confidence);
+    events.push_back({RunEvent::Kind::MapChange, 0, size_t(c.bestFrame), b});
+  }
+  for (const MissingCrossing& m : report.missingCrossings) {
+    if (m.bestFrame < 0) continue;
+    char b[160];
+    std::snprintf(b, sizeof b, "unmapped crossing: %d paint runs off the map's paint (confidence %.2f)", m.paintRuns, m.confidence);
+    events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
+  }
   std::stable_sort(events.begin(), events.end(), [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });
   return events;
 }

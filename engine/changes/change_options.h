@@ -19,6 +19,19 @@ struct ChangeOptions {
   double missingGap = 1.0;      // road cells this far outside every polygon are candidates of a missing area ...
   double missingMinDepth = 3.0; // ... which must reach this far out ...
   double missingMinArea = 25.0; // ... and cover this many square metres
+  // Road paint (crossings): measured on the real sweeps, it stands out from asphalt only this near the sensor.
+  double paintRange = 12.0;
+  double paintContrast = 1.7;  // a bright return: this many times the median of the sweep's near ground
+  int paintRunPoints = 3;      // consecutive bright returns of a ring that make a paint run ...
+  double paintRunGap = 0.15;   // ... no farther apart than this (metres)
+  // Paint runs per ground return near the sensor: inside a painted crossing, and on plain asphalt.
+  double crossingPaintRate = 0.004, asphaltPaintRate = 0.001;
+  double crossingEvidence = 3.0;  // log-likelihood ratio of paint against none for a crossing's verdict
+  double missingCrossingExtent = 2.0;  // metres: unmapped paint this deep and this wide is a crossing ...
+  double crossingAngle = 0.52;         // ... when its long side is at least this far (radians) off the lanes' direction
+  // Paint this near a painted lane boundary is the line's: the poses are off by up to half a
+  // metre and a double line is 0.3 m wide.
+  double paintLineReach = 1.0;
 };
 
 }  // namespace hdprior

@@ -21,6 +21,10 @@ json coordinates(const std::vector<Eigen::Vector2d>& points, bool closed) {
 
 json number(double v) { return std::isfinite(v) ? json(std::round(v * 1000.0) / 1000.0) : json(nullptr); }
 
+json polygon(const std::vector<Eigen::Vector2d>& outline) {
+  return {{"type", "Polygon"}, {"coordinates", json::array({coordinates(outline, true)})}};
+}
+
 json stretchFeature(const BoundaryStretch& s) {
   json evidence = {{"kind", s.evidence},
                    {"offset_m", number(s.offset)},
@@ -50,7 +54,7 @@ json missingFeature(const MissingSurface& m) {
                    {"depth_m", number(m.depth)},
                    {"road_points", m.roadPoints}};
   return {{"type", "Feature"},
-          {"geometry", {{"type", "Polygon"}, {"coordinates", json::array({coordinates(m.outline, true)})}}},
+          {"geometry", polygon(m.outline)},
           {"properties",
            {{"element", "drivable_area"},
             {"id", nullptr},
@@ -62,6 +66,34 @@ json missingFeature(const MissingSurface& m) {
             {"change", "lane_geometry_change"}}}};
 }
 
+// In the simulator's labels' terms: a mapped crossing without paint was inserted into the map; a
+// painted one the map lacks was deleted from it.
+json crossingFeature(const CrossingVerdict& c) {
+  json properties = {{"element", "pedestrian_crossing"},
+                     {"id", c.id},
+                     {"verdict", verdictName(c.verdict)},
+                     {"confidence", number(c.confidence)},
+                     {"first_frame", c.firstFrame},
+                     {"best_frame", c.bestFrame},
+                     {"evidence", {{"kind", "paint"}, {"road_points", c.roadPoints}, {"paint_runs", c.paintRuns}}}};
+  if (c.verdict == MapVerdict::Contradicted) properties["change"] = "insert_crosswalk";
+  return {{"type", "Feature"}, {"geometry", polygon(c.outline)}, {"properties", properties}};
+}
+
+json missingCrossingFeature(const MissingCrossing& m) {
+  return {{"type", "Feature"},
+          {"geometry", polygon(m.outline)},
+          {"properties",
+           {{"element", "pedestrian_crossing"},
+            {"id", nullptr},
+            {"verdict", "missing"},
+            {"confidence", number(m.confidence)},
+            {"first_frame", m.firstFrame},
+            {"best_frame", m.bestFrame},
+            {"evidence", {{"kind", "paint_outside_map"}, {"paint_runs", m.paintRuns}}},
+            {"change", "delete_crosswalk"}}}};
+}
+
 }  // namespace
 
 std::string changesGeoJson(const MapChangeReport& report, const std::string& logId) {
@@ -69,6 +101,9 @@ std::string changesGeoJson(const MapChangeReport& report, const std::string& log
   for (const BoundaryStretch& s : report.stretches)
     if (s.samples > 0) features.push_back(stretchFeature(s));
   for (const MissingSurface& m : report.missing) features.push_back(missingFeature(m));
+  for (const CrossingVerdict& c : report.crossings)
+    if (c.roadPoints > 0) features.push_back(crossingFeature(c));
+  for (const MissingCrossing& m : report.missingCrossings) features.push_back(missingCrossingFeature(m));
   return json{{"type", "FeatureCollection"}, {"name", logId}, {"crs_note", "city frame of the log, metres"}, {"features", features}}
              .dump(1) +
          "\n";
@@ -82,6 +117,9 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
     areas[verdictName(v.verdict)] = areas[verdictName(v.verdict)].get<int>() + 1;
     if (v.verdict == MapVerdict::Contradicted) contradicted.push_back(v.id);
   }
+  json crossings = {{"consistent", 0}, {"contradicted", 0}, {"unobserved", 0}};
+  for (const CrossingVerdict& c : report.crossings)
+    crossings[verdictName(c.verdict)] = crossings[verdictName(c.verdict)].get<int>() + 1;
   for (const BoundaryStretch& s : report.stretches)
     if (s.samples > 0) stretches[verdictName(s.verdict)] = stretches[verdictName(s.verdict)].get<int>() + 1;
   return json{{"log_id", logId},
@@ -91,7 +129,9 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
               {"drivable_areas", areas},
               {"contradicted_drivable_areas", contradicted},
               {"boundary_stretches", stretches},
-              {"missing_surfaces", report.missing.size()}}
+              {"missing_surfaces", report.missing.size()},
+              {"pedestrian_crossings", crossings},
+              {"missing_crossings", report.missingCrossings.size()}}
              .dump(2) +
          "\n";
 }

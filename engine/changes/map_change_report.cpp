@@ -86,25 +86,36 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   const std::vector<size_t> sweeps = spacedSweeps(log, poses, options.frameSpacing, drivenM);
   SurfaceEvidence evidence = evidenceGrid(log, poses, sweeps, roadPoints, options);
   const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
+  CrossingEvidence crossings(map.vectorMap(), options);
   size_t frames = 0;
+  struct Labelled {
+    LabelledSweep sweep;
+    SweepPaint paint;
+  };
   auto label = [&](size_t k) {
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
-    return labelSweep(*log.sweep(sweeps[k]), levelRotation(cityTEgo), roadPoints);
+    const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k]);
+    Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}};
+    out.paint = findSweepPaint(*sweep, out.sweep, options);
+    return out;
+  };
+  auto add = [&](size_t k, const Labelled& labelled) {
+    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
+    evidence.add(int(sweeps[k]), labelled.sweep, cityTEgo, ground);
+    crossings.add(int(sweeps[k]), labelled.paint, cityTEgo);
+    ++frames;
   };
   for (size_t k = 0; k < sweeps.size(); k += 2) {
     if (cancel && cancel->load()) break;
-    std::future<LabelledSweep> second;
+    std::future<Labelled> second;
     if (k + 1 < sweeps.size()) second = std::async(std::launch::async, label, k + 1);
-    const LabelledSweep first = label(k);
-    evidence.add(int(sweeps[k]), first, poses.at(log.sweepTimestamps()[sweeps[k]]), ground);
-    ++frames;
-    if (second.valid()) {
-      evidence.add(int(sweeps[k + 1]), second.get(), poses.at(log.sweepTimestamps()[sweeps[k + 1]]), ground);
-      ++frames;
-    }
+    add(k, label(k));
+    if (second.valid()) add(k + 1, second.get());
     if (progress) progress(frames, sweeps.size());
   }
   MapChangeReport report = judgeMapChanges(std::move(evidence), map, options);
+  report.crossings = crossings.verdicts();
+  report.missingCrossings = crossings.missing();
   report.frames = frames;
   report.drivenKm = drivenM / 1000.0;
   return report;

@@ -27,9 +27,16 @@ struct Place {
   bool closed = false;
 };
 
-// Where each report lies: a contradicted area's contradicted stretches, a missing surface's outline.
-std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report) {
+// Where each report of an element lies: a contradicted area's contradicted stretches, a missing
+// surface's outline; a contradicted or missing crossing's outline.
+std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapElement element) {
   std::vector<std::vector<Place>> out;
+  if (element == MapElement::PedestrianCrossing) {
+    for (const CrossingVerdict& c : report.crossings)
+      if (c.verdict == MapVerdict::Contradicted) out.push_back({{c.outline, true}});
+    for (const MissingCrossing& m : report.missingCrossings) out.push_back({{m.outline, true}});
+    return out;
+  }
   for (const DrivableAreaVerdict& v : report.drivableAreas) {
     if (v.verdict != MapVerdict::Contradicted) continue;
     std::vector<Place> places;
@@ -57,18 +64,26 @@ bool near(const std::vector<Place>& a, const std::vector<Place>& b, double match
 
 }  // namespace
 
-std::string changeScoreJson(const ChangeScore& s) {
+namespace {
+
+nlohmann::json scoreJson(const ChangeScore& s) {
   const auto value = [](double v) { return std::isfinite(v) ? nlohmann::json(std::round(v * 1e4) / 1e4) : nlohmann::json(nullptr); };
-  return nlohmann::json{{"reports", s.reports},
-                        {"reports_near_change", s.reportsNearChange},
-                        {"precision", value(s.precision())},
-                        {"changes", s.changes},
-                        {"changes_found", s.changesFound},
-                        {"recall", value(s.recall())},
-                        {"driven_km", value(s.drivenKm)},
-                        {"false_alarms_per_km", value(s.drivenKm > 0 ? double(s.falseAlarms()) / s.drivenKm : NAN)}}
-             .dump(2) +
-         "\n";
+  return {{"reports", s.reports},
+          {"reports_near_change", s.reportsNearChange},
+          {"precision", value(s.precision())},
+          {"changes", s.changes},
+          {"changes_found", s.changesFound},
+          {"recall", value(s.recall())},
+          {"driven_km", value(s.drivenKm)},
+          {"false_alarms_per_km", value(s.drivenKm > 0 ? double(s.falseAlarms()) / s.drivenKm : NAN)}};
+}
+
+}  // namespace
+
+std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings) {
+  nlohmann::json j = scoreJson(drivableAreas);
+  j["pedestrian_crossing"] = scoreJson(crossings);
+  return j.dump(2) + "\n";
 }
 
 ChangeScore& ChangeScore::operator+=(const ChangeScore& o) {
@@ -78,18 +93,18 @@ ChangeScore& ChangeScore::operator+=(const ChangeScore& o) {
   return *this;
 }
 
-ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, double nearRoute,
-                            double match) {
+ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, MapElement element,
+                            double nearRoute, double match) {
   ChangeScore score;
   score.drivenKm = report.drivenKm;
   std::vector<std::vector<Place>> changed;
   std::vector<bool> passed;
   for (const MapChangeLabel& l : labels) {
-    if (l.element != "drivable_area") continue;
+    if (l.element != (element == MapElement::DrivableArea ? "drivable_area" : "pedestrian_crossing")) continue;
     changed.push_back(labelPlaces(l));
     passed.push_back(l.routeDistance <= nearRoute);
   }
-  const std::vector<std::vector<Place>> reports = reportPlaces(report);
+  const std::vector<std::vector<Place>> reports = reportPlaces(report, element);
   score.reports = reports.size();
   for (const std::vector<Place>& r : reports)
     score.reportsNearChange += std::any_of(changed.begin(), changed.end(), [&](const auto& c) { return near(r, c, match); });

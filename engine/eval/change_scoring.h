@@ -9,10 +9,14 @@
 namespace hdprior {
 
 // {"reports", "reports_near_change", "precision", "changes", "changes_found", "recall", "driven_km",
-// "false_alarms_per_km"} (null where undefined).
-std::string changeScoreJson(const ChangeScore& score);
+// "false_alarms_per_km"} of the drivable areas, and the same of the crossings in
+// "pedestrian_crossing" (null where undefined).
+std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings);
 
-ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, double nearRoute = 15.0,
-                            double match = 5.0);
+enum class MapElement { DrivableArea, PedestrianCrossing };
+
+// The reports of one element scored against the labelled changes of that element.
+ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels,
+                            MapElement element = MapElement::DrivableArea, double nearRoute = 15.0, double match = 5.0);
 
 }  // namespace hdprior

@@ -156,6 +156,19 @@ std::string mapCheckMarkdown(const EvalSummary& s) {
                   s.mapCheckUnlabelledLogs, c->reports, c->drivenKm, c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);
     md += b;
   }
+  if (const auto& c = s.crossingCheckLabelled) {
+    std::snprintf(b, sizeof b,
+                  "\nCrossings (paint within 12 m of the lidar), the same logs with labelled changes: %zu of %zu changes found (recall %s), "
+                  "%zu of %zu reports near a change (precision %s).\n",
+                  c->changesFound, c->changes, c->changes ? number(c->recall(), 2).c_str() : "n/a", c->reportsNearChange, c->reports,
+                  c->reports ? number(c->precision(), 2).c_str() : "n/a");
+    md += b;
+  }
+  if (const auto& c = s.crossingCheckUnlabelled) {
+    std::snprintf(b, sizeof b, "\nCrossings, the logs without labelled changes: %zu reports, %.2f per km.\n", c->reports,
+                  c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);
+    md += b;
+  }
   return md;
 }
 

@@ -58,8 +58,10 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
     priors.insert(priors.end(), log.priorErrors.begin(), log.priorErrors.end());
     if (log.mapCheck) {
       std::optional<ChangeScore>& sum = log.mapCheck->labelled ? s.mapCheckLabelled : s.mapCheckUnlabelled;
-      if (!sum) sum.emplace();
+      std::optional<ChangeScore>& crossings = log.mapCheck->labelled ? s.crossingCheckLabelled : s.crossingCheckUnlabelled;
+      if (!sum) sum.emplace(), crossings.emplace();
       *sum += log.mapCheck->score;
+      *crossings += log.mapCheck->crossings;
       ++(log.mapCheck->labelled ? s.mapCheckLabelledLogs : s.mapCheckUnlabelledLogs);
     }
     if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {

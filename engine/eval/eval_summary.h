@@ -24,7 +24,8 @@ struct LogEvaluation {
   // With `eval --check-map`: the map check's score (every report a false alarm when the log has no
   // map_change.json; `labelled` when it has one).
   struct MapCheck {
-    ChangeScore score;
+    ChangeScore score;      // drivable areas
+    ChangeScore crossings;  // pedestrian crossings
     bool labelled = false;
   };
   std::optional<MapCheck> mapCheck;
@@ -51,6 +52,7 @@ struct EvalSummary {
   double worstRatio = 0.0;
   // The map checks summed over the logs with labelled changes and over those without.
   std::optional<ChangeScore> mapCheckLabelled, mapCheckUnlabelled;
+  std::optional<ChangeScore> crossingCheckLabelled, crossingCheckUnlabelled;  // the same logs' crossings
   size_t mapCheckLabelledLogs = 0, mapCheckUnlabelledLogs = 0;
 };
 EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);

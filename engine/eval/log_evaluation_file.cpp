@@ -131,8 +131,11 @@ void writeLogEvaluation(const std::filesystem::path& file, const LogEvaluation& 
     j["pipeline_s"] = log.pipelineSeconds;
     if (log.mapCheck) {
       const ChangeScore& c = log.mapCheck->score;
+      const ChangeScore& x = log.mapCheck->crossings;
       j["map_check"] = {{"labelled", log.mapCheck->labelled}, {"reports", c.reports}, {"reports_near_change", c.reportsNearChange},
-                        {"changes", c.changes}, {"changes_found", c.changesFound}, {"driven_km", c.drivenKm}};
+                        {"changes", c.changes}, {"changes_found", c.changesFound}, {"driven_km", c.drivenKm},
+                        {"crossings", {{"reports", x.reports}, {"reports_near_change", x.reportsNearChange},
+                                       {"changes", x.changes}, {"changes_found", x.changesFound}}}};
     }
   }
   writeFileAtomically(file, j.dump(1) + "\n");
@@ -167,9 +170,13 @@ LogEvaluation readLogEvaluation(const std::filesystem::path& file) {
     const json& m = r.member(j, "map_check", "the result");
     const json& labelled = r.member(m, "labelled", "the result.map_check");
     if (!labelled.is_boolean()) throw Error(file.string(), "the result.map_check.labelled is not true or false");
+    const json& x = r.member(m, "crossings", "the result.map_check");
+    const char* crossings = "the result.map_check.crossings";
+    const double km = r.number(m, "driven_km", "the result.map_check");
     log.mapCheck = LogEvaluation::MapCheck{{r.count(m, "reports", "the result.map_check"), r.count(m, "reports_near_change", "the result.map_check"),
-                                            r.count(m, "changes", "the result.map_check"), r.count(m, "changes_found", "the result.map_check"),
-                                            r.number(m, "driven_km", "the result.map_check")},
+                                            r.count(m, "changes", "the result.map_check"), r.count(m, "changes_found", "the result.map_check"), km},
+                                           {r.count(x, "reports", crossings), r.count(x, "reports_near_change", crossings),
+                                            r.count(x, "changes", crossings), r.count(x, "changes_found", crossings), km},
                                            labelled.get<bool>()};
   }
   return log;

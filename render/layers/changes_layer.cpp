@@ -59,6 +59,12 @@ void ChangesLayer::build(const Scene& scene) {
       else if (show_ == 2) strokes.polyline(onGround(scene, s.line, false), 0.15f, unobserved_);
     }
     for (const MissingSurface& m : report.missing) strokes.polyline(onGround(scene, m.outline, true), 0.45f, missing_);
+    for (const CrossingVerdict& c : report.crossings) {
+      if (c.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, c.outline, true), 0.45f, contradicted_);
+      else if (c.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, c.outline, true), 0.2f, consistent_);
+      else if (show_ == 2 && c.roadPoints > 0) strokes.polyline(onGround(scene, c.outline, true), 0.12f, unobserved_);
+    }
+    for (const MissingCrossing& m : report.missingCrossings) strokes.polyline(onGround(scene, m.outline, true), 0.3f, missing_);
     if (show_ >= 1) cells = surfaceCells(scene, report.evidence, road_, notRoad_);
   }
   strokes_.upload(strokes, {});
@@ -73,7 +79,7 @@ void ChangesLayer::draw(const DrawContext& context) const {
 
 std::vector<MarkerKey> ChangesLayer::markerKeys() const {
   if (!analysis_ || !analysis_->changes) return {};
-  std::vector<MarkerKey> keys = {{"contradicted", contradicted_}, {"consistent", consistent_}, {"missing surface", missing_}};
+  std::vector<MarkerKey> keys = {{"contradicted", contradicted_}, {"consistent", consistent_}, {"missing surface or crossing", missing_}};
   if (show_ >= 1) {
     keys.push_back({"lidar: road", road_});
     keys.push_back({"lidar: beside the road", notRoad_});

@@ -1,6 +1,7 @@
 // `hdprior changes` on a simulated drive: over its own map nothing is contradicted; over a copy
-// of the map with the street the drive starts on narrowed, that street is; bad input is one line
-// and exit status 2 with nothing written. And on the real log over its real map.
+// of the map with the street the drive starts on narrowed, that street is; a painted crossing the
+// map lacks is missing and one it draws without paint contradicted; bad input is one line and exit
+// status 2 with nothing written. And on the real log over its real map.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/geom/polygon2d.h"
+#include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
+#include "engine/io/vector_map.h"
 #include "narrowed_street.h"
 #include "test_data.h"
 
@@ -80,6 +84,82 @@ TEST_F(ChangesCommand, BadInputIsOneLineAndNothingIsWritten) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+Eigen::Vector2d centreOf(const PedestrianCrossing& c) {
+  return (c.edge1.front() + c.edge1.back() + c.edge2.front() + c.edge2.back()).head<2>() / 4.0;
+}
+
+double distanceToDrive(const Eigen::Vector2d& p, const PoseTrajectory& drive) {
+  double best = 1e9;
+  for (const SE3& pose : drive.poses()) best = std::min(best, (pose.translation().head<2>() - p).norm());
+  return best;
+}
+
+// The log's map without the crossing nearest to the drive, and with a crossing 3 m deep drawn
+// across the road at the pose farthest from every crossing. Returns their centre and the new id.
+std::pair<Eigen::Vector2d, int64_t> moveACrossing(const fs::path& log) {
+  const ArgoverseLog opened(log);
+  const PoseTrajectory drive = opened.cityTEgoAtSweeps();
+  VectorMap map = readVectorMap(opened.mapFiles().vectorMap);
+  auto nearest = std::min_element(map.pedestrianCrossings.begin(), map.pedestrianCrossings.end(), [&](const auto& a, const auto& b) {
+    return distanceToDrive(centreOf(a), drive) < distanceToDrive(centreOf(b), drive);
+  });
+  EXPECT_LT(distanceToDrive(centreOf(*nearest), drive), 5.0) << "the drive should pass over a crossing";
+  const Eigen::Vector2d removed = centreOf(*nearest);
+  map.pedestrianCrossings.erase(nearest);
+  const SE3 far = *std::max_element(drive.poses().begin(), drive.poses().end(), [&](const SE3& a, const SE3& b) {
+    auto clearance = [&](const SE3& p) {
+      double d = 1e9;
+      for (const PedestrianCrossing& c : map.pedestrianCrossings) d = std::min(d, (centreOf(c) - p.translation().head<2>()).norm());
+      return std::min(d, (removed - p.translation().head<2>()).norm());
+    };
+    return clearance(a) < clearance(b);
+  });
+  const Eigen::Vector3d at = far.translation(), ahead = far.linear().col(0), left = far.linear().col(1);
+  PedestrianCrossing drawn;
+  drawn.id = 900000;
+  drawn.edge1 = {at - 1.5 * ahead - 4.0 * left, at - 1.5 * ahead + 4.0 * left};
+  drawn.edge2 = {at + 1.5 * ahead - 4.0 * left, at + 1.5 * ahead + 4.0 * left};
+  map.pedestrianCrossings.push_back(drawn);
+  writeFileAtomically(opened.mapFiles().vectorMap, vectorMapToJson(map));
+  return {removed, drawn.id};
+}
+
+// Town 1's 6 s drive passes over two painted crossings.
+TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWithoutPaintIsContradicted) {
+  const test::SimulatedDrive drive = test::simulatedTownDrive("changes_crossings", 1, 0, 6.0);
+  const fs::path run = drive.folder / "run";
+  ASSERT_EQ(test::runHdprior("run " + test::quoted(drive.log) + " --out " + test::quoted(run)).status, 0);
+  const auto changes = [&](const std::string& name) {
+    const test::CommandResult r = test::runHdprior("changes " + test::quoted(drive.log) + " --run " + test::quoted(run) +
+                                                   " --out " + test::quoted(drive.folder / name));
+    EXPECT_EQ(r.status, 0) << r.err;
+    return summaryOf(drive.folder / name);
+  };
+  const nlohmann::json own = changes("own");
+  EXPECT_GE(own["pedestrian_crossings"]["consistent"].get<int>(), 2) << own.dump();
+  EXPECT_EQ(own["pedestrian_crossings"]["contradicted"].get<int>(), 0) << own.dump();
+  EXPECT_EQ(own["missing_crossings"].get<int>(), 0) << own.dump();
+
+  const auto [removed, drawn] = moveACrossing(drive.log);
+  const nlohmann::json moved = changes("moved");
+  EXPECT_EQ(moved["missing_crossings"].get<int>(), 1) << moved.dump();
+  EXPECT_EQ(moved["pedestrian_crossings"]["contradicted"].get<int>(), 1) << moved.dump();
+  const nlohmann::json geo = nlohmann::json::parse(test::readFileText(drive.folder / "moved" / "changes.geojson"));
+  bool foundMissing = false, foundDrawn = false;
+  for (const nlohmann::json& f : geo["features"]) {
+    const nlohmann::json& p = f["properties"];
+    if (p["element"] != "pedestrian_crossing") continue;
+    if (p["verdict"] == "contradicted") foundDrawn |= p["id"] == drawn && p["change"] == "insert_crosswalk";
+    if (p["verdict"] != "missing") continue;
+    Ring2 outline;
+    for (const auto& xy : f["geometry"]["coordinates"][0]) outline.emplace_back(xy[0].get<double>(), xy[1].get<double>());
+    outline.pop_back();
+    foundMissing |= p["change"] == "delete_crosswalk" && polylineDistance(std::vector<Eigen::Vector2d>{removed}, outline, true) < 3.0;
+  }
+  EXPECT_TRUE(foundMissing) << "no missing crossing near (" << removed.transpose() << ")";
+  EXPECT_TRUE(foundDrawn);
+}
+
 // The real log over its own map (one sweep used: the two are 7 cm apart): the kerbs the sweep shows
 // agree with the drivable area, nothing is contradicted and no surface is missing.
 TEST(ChangesCommandReal, TheRealSweepAgreesWithItsMap) {
@@ -94,6 +174,10 @@ TEST(ChangesCommandReal, TheRealSweepAgreesWithItsMap) {
   EXPECT_GT(s["observed_boundary_km"].get<double>(), 0.02) << s.dump();
   EXPECT_EQ(s["drivable_areas"]["contradicted"].get<int>(), 0) << s.dump();
   EXPECT_EQ(s["missing_surfaces"].get<int>(), 0) << s.dump();
+  // The one sweep shows the painted edges of the crossing 8-12 m ahead, and nothing contradicts a crossing.
+  EXPECT_EQ(s["pedestrian_crossings"]["consistent"].get<int>(), 1) << s.dump();
+  EXPECT_EQ(s["pedestrian_crossings"]["contradicted"].get<int>(), 0) << s.dump();
+  EXPECT_EQ(s["missing_crossings"].get<int>(), 0) << s.dump();
 }
 
 }  // namespace
