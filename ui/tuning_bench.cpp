@@ -105,9 +105,17 @@ std::string mapCheckReport(const render::Analysis& a) {
     contradicted += v.verdict == MapVerdict::Contradicted;
     consistent += v.verdict == MapVerdict::Consistent;
   }
-  char line[200];
-  std::snprintf(line, sizeof line, "map check: %zu drivable areas contradicted, %zu consistent, %zu missing surfaces, %.3f km of boundary observed\n",
-                contradicted, consistent, a.changes->missing.size(), a.changes->observedBoundaryKm);
+  size_t crossingsContradicted = 0, crossingsConsistent = 0;
+  for (const CrossingVerdict& c : a.changes->crossings) {
+    crossingsContradicted += c.verdict == MapVerdict::Contradicted;
+    crossingsConsistent += c.verdict == MapVerdict::Consistent;
+  }
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "map check: %zu drivable areas contradicted, %zu consistent, %zu missing surfaces, %.3f km of boundary observed; "
+                "crossings: %zu contradicted, %zu consistent, %zu missing\n",
+                contradicted, consistent, a.changes->missing.size(), a.changes->observedBoundaryKm, crossingsContradicted,
+                crossingsConsistent, a.changes->missingCrossings.size());
   return line;
 }
 

@@ -1,5 +1,6 @@
 // The bench's map check under Xvfb: after a run, `check-map` draws the changes layer (the street
-// drawn too narrow in red), lists a map-change event at the frame that saw it, and `report` counts it.
+// drawn too narrow in red), lists a map-change event at the frame that saw it, and `report` counts it;
+// the same for a crossing drawn where none is painted and a painted one the map lacks.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "display_run.h"
+#include "moved_crossing.h"
 #include "narrowed_street.h"
 #include "render/image_compare.h"
 #include "test_data.h"
@@ -40,6 +42,18 @@ TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   EXPECT_NE(r.out.find("map check: 1 drivable areas contradicted"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("map-change drivable area " + std::to_string(narrowed) + ": kerb"), std::string::npos) << r.out;
   EXPECT_GT(contradictedPixels(readPng(after)), contradictedPixels(readPng(before)) + 200) << after;
+}
+
+TEST(MapCheck, CrossingsTheLidarContradictsAreCountedAndListedAsEvents) {
+  const SimulatedDrive drive = simulatedTownDrive("map_check_crossings", 1, 0, 6.0);
+  const int64_t drawn = moveACrossing(drive.log).second;
+  writeText(drive.folder / "script.txt", "run\ncheck-map\nwait 1\nreport\nevents\n");
+  const CommandResult r = runWithDisplay("view " + quoted(drive.log) + " --script " + quoted(drive.folder / "script.txt"), drive.folder);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("crossings: 1 contradicted"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", 1 missing\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("map-change crossing " + std::to_string(drawn) + ": no paint"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("map-change unmapped crossing"), std::string::npos) << r.out;
 }
 
 TEST(MapCheck, CheckMapBeforeARunStopsTheScriptAtItsLine) {

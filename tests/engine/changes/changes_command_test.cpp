@@ -11,9 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/geom/polygon2d.h"
-#include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
-#include "engine/io/vector_map.h"
+#include "moved_crossing.h"
 #include "narrowed_street.h"
 #include "test_data.h"
 
@@ -84,46 +83,6 @@ TEST_F(ChangesCommand, BadInputIsOneLineAndNothingIsWritten) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
-Eigen::Vector2d centreOf(const PedestrianCrossing& c) {
-  return (c.edge1.front() + c.edge1.back() + c.edge2.front() + c.edge2.back()).head<2>() / 4.0;
-}
-
-double distanceToDrive(const Eigen::Vector2d& p, const PoseTrajectory& drive) {
-  double best = 1e9;
-  for (const SE3& pose : drive.poses()) best = std::min(best, (pose.translation().head<2>() - p).norm());
-  return best;
-}
-
-// The log's map without the crossing nearest to the drive, and with a crossing 3 m deep drawn
-// across the road at the pose farthest from every crossing. Returns their centre and the new id.
-std::pair<Eigen::Vector2d, int64_t> moveACrossing(const fs::path& log) {
-  const ArgoverseLog opened(log);
-  const PoseTrajectory drive = opened.cityTEgoAtSweeps();
-  VectorMap map = readVectorMap(opened.mapFiles().vectorMap);
-  auto nearest = std::min_element(map.pedestrianCrossings.begin(), map.pedestrianCrossings.end(), [&](const auto& a, const auto& b) {
-    return distanceToDrive(centreOf(a), drive) < distanceToDrive(centreOf(b), drive);
-  });
-  EXPECT_LT(distanceToDrive(centreOf(*nearest), drive), 5.0) << "the drive should pass over a crossing";
-  const Eigen::Vector2d removed = centreOf(*nearest);
-  map.pedestrianCrossings.erase(nearest);
-  const SE3 far = *std::max_element(drive.poses().begin(), drive.poses().end(), [&](const SE3& a, const SE3& b) {
-    auto clearance = [&](const SE3& p) {
-      double d = 1e9;
-      for (const PedestrianCrossing& c : map.pedestrianCrossings) d = std::min(d, (centreOf(c) - p.translation().head<2>()).norm());
-      return std::min(d, (removed - p.translation().head<2>()).norm());
-    };
-    return clearance(a) < clearance(b);
-  });
-  const Eigen::Vector3d at = far.translation(), ahead = far.linear().col(0), left = far.linear().col(1);
-  PedestrianCrossing drawn;
-  drawn.id = 900000;
-  drawn.edge1 = {at - 1.5 * ahead - 4.0 * left, at - 1.5 * ahead + 4.0 * left};
-  drawn.edge2 = {at + 1.5 * ahead - 4.0 * left, at + 1.5 * ahead + 4.0 * left};
-  map.pedestrianCrossings.push_back(drawn);
-  writeFileAtomically(opened.mapFiles().vectorMap, vectorMapToJson(map));
-  return {removed, drawn.id};
-}
-
 // Town 1's 6 s drive passes over two painted crossings.
 TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWithoutPaintIsContradicted) {
   const test::SimulatedDrive drive = test::simulatedTownDrive("changes_crossings", 1, 0, 6.0);
@@ -140,7 +99,7 @@ TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWi
   EXPECT_EQ(own["pedestrian_crossings"]["contradicted"].get<int>(), 0) << own.dump();
   EXPECT_EQ(own["missing_crossings"].get<int>(), 0) << own.dump();
 
-  const auto [removed, drawn] = moveACrossing(drive.log);
+  const auto [removed, drawn] = test::moveACrossing(drive.log);
   const nlohmann::json moved = changes("moved");
   EXPECT_EQ(moved["missing_crossings"].get<int>(), 1) << moved.dump();
   EXPECT_EQ(moved["pedestrian_crossings"]["contradicted"].get<int>(), 1) << moved.dump();
