@@ -9,6 +9,7 @@
 #include "app/option_checks.h"
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
+#include "engine/io/ground_labels.h"
 #include "engine/odom/given_odometry.h"
 #include "engine/pipeline/config.h"
 #include "engine/sim/demo_log.h"
@@ -49,8 +50,19 @@ GivenOdometry checkedOdometryFile(const fs::path& file, const OdometryFileOption
   return given;
 }
 
+// The labels of one sweep, checked before the window opens: the frame is the log's, and the file
+// holds a label for each of its points.
+ui::ViewerOptions::FrameGroundLabels checkedGroundLabels(const std::string& file, size_t frame, const fs::path& logDir) {
+  const ArgoverseLog log(logDir);
+  if (frame >= log.sweepCount())
+    throw Error("option --ground-labels-frame",
+                "frame " + std::to_string(frame) + " is out of range (the log has " + std::to_string(log.sweepCount()) + " sweeps)");
+  return {readGroundLabels(file, log.sweep(frame)->points.size()), frame};
+}
+
 struct ViewArguments {
-  std::string log, script, screenshot, size = "1280x800", config, odometry, session;
+  std::string log, script, screenshot, size = "1280x800", config, odometry, session, groundLabels;
+  long long groundLabelsFrame = 0;
   OdometryFileArguments odometryFile;
   long long frames = 0;  // 0: not given
   bool exit = false;
@@ -92,6 +104,7 @@ int runView(const ViewArguments& a) {
   if (!options.log && options.scripted) throw Error("option LOG", "--script needs a log (the demo log could not be generated)");
   const OdometryFileOptions odometryFile = odometryFileOptions(a.odometryFile);
   if (!a.odometry.empty()) options.odometry = checkedOdometryFile(a.odometry, odometryFile, options.log);
+  if (!a.groundLabels.empty()) options.groundLabels = checkedGroundLabels(a.groundLabels, size_t(a.groundLabelsFrame), *options.log);
   return ui::runViewer(options);
 }
 
@@ -110,6 +123,15 @@ Command addViewCommand(CLI::App& hdprior) {
   command->add_option("--screenshot", a->screenshot, "the window's PNG, with --script or --frames")->type_name("FILE.png");
   command->add_option("--size", a->size, "the window's size in pixels")->type_name("WxH")->check(imageSize());
   command->add_option("--config", a->config, "the configuration the tuning bench starts from (default: the built-in one)")->type_name("FILE");
+  command->add_option("--ground-labels", a->groundLabels,
+                      "reference ground labels of one sweep (an Argoverse 2 scene-flow flow_labels.feather, is_ground_0): "
+                      "the ground_labels layer, shown at that sweep")
+      ->type_name("FILE");
+  command->add_option("--ground-labels-frame", a->groundLabelsFrame, "the sweep the --ground-labels are of")
+      ->type_name("N")
+      ->default_val(0)
+      ->check(integerAtLeast(0))
+      ->needs("--ground-labels");
   addGivenOdometryOptions(*command, a->odometry, a->odometryFile,
                           "open this trajectory file (TUM or KITTI) and run the "
                           "pipeline over it, as run does");

@@ -10,6 +10,7 @@
 #include "engine/map/hd_map.h"
 #include "engine/pipeline/diagnostic_plots.h"
 #include "render/layer_registry.h"
+#include "render/layers/ground_labels_layer.h"
 #include "render/snapshot.h"
 
 namespace hdprior::ui {
@@ -48,6 +49,16 @@ void AppState::open(LoadedLog loaded) {
     camera.yaw = std::atan2(forward.y(), forward.x());
     camera.follow(frame().cityTEgo.translation() - scene_.origin);
   }
+}
+
+void AppState::showGroundLabels(std::vector<uint8_t> labels, size_t frameIndex) {
+  scene_.groundLabels = std::move(labels);
+  scene_.groundLabelsFrame = frameIndex;
+  renderer_->setScene(scene_);
+  for (const auto& layer : renderer_->layers())
+    if (layer->name() == render::GroundLabelsLayer::kName) setLayerVisible(*layer, true);
+  renderer_->setFrame(render::makeFrame(scene_, std::min(frameIndex, frameCount() - 1)));
+  camera.follow(frame().cityTEgo.translation() - scene_.origin);
 }
 
 size_t AppState::frameCount() const { return hasLog() ? loaded_.log->sweepCount() : 0; }

@@ -49,6 +49,9 @@ class AppState {
 
   // Takes a loaded log: builds the scene and the layers, shows frame 0 (or sets `error`).
   void open(LoadedLog loaded);
+  // Reference per-point ground labels of one frame (view --ground-labels): the ground_labels
+  // layer shown, at that frame (one label per point of its sweep).
+  void showGroundLabels(std::vector<uint8_t> labels, size_t frameIndex);
   bool hasLog() const { return loaded_.log != nullptr; }
   const ArgoverseLog& log() const { return *loaded_.log; }
   const render::Scene& scene() const { return scene_; }

@@ -86,6 +86,7 @@ void Viewer::finishLoading() {
     // view --odometry belongs to the log given with it, not to one opened later from the panel.
     if (loadingFromOptions_ && options_.odometry && !state_->bench().openOdometryFile(*options_.odometry))
       throw *state_->bench().odometryFile.failure();
+    if (loadingFromOptions_ && options_.groundLabels) state_->showGroundLabels(options_.groundLabels->labels, options_.groundLabels->frame);
     if (loadingFromOptions_ && options_.session) restoreSession(readViewSession(*options_.session), options_.scripted);
   } catch (const Error& e) {
     if (loadingFromOptions_) throw;

@@ -31,6 +31,11 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> configPath;  // ... read from this file (its save/load path)
   std::optional<GivenOdometry> odometry;            // view --odometry FILE: opened in the Pipeline tab
   std::optional<std::filesystem::path> session;     // view --session FILE: restored once the log is open
+  struct FrameGroundLabels {
+    std::vector<uint8_t> labels;  // one per point of the frame's sweep (is_ground_0)
+    size_t frame = 0;
+  };
+  std::optional<FrameGroundLabels> groundLabels;  // view --ground-labels FILE: shown once the log is open
   int width = 1280, height = 800;
   int swapInterval = 1;  // 0: do not wait for vertical blank
   bool cacheView = true;  // false: draw every layer every frame (benchmarks of the full draw)

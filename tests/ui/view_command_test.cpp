@@ -302,6 +302,25 @@ TEST(ViewCommand, ScriptStopsAtACorruptSweep) {
   EXPECT_FALSE(fs::exists(shot));
 }
 
+// The first real sweep's ground segmentation against its real labels, in the app: the agreeing
+// ground green (the ground_labels layer, shown at that sweep).
+TEST(ViewCommand, ShowsTheGroundSegmentationAgainstRealLabels) {
+  const fs::path dir = freshOutputDir("view_ground_labels");
+  const fs::path labels = sharedDataDir() / "labels/7fab2350-7eaf-3b7e-a39d-6937a4c1bede/flow_labels.feather";
+  const auto greenPixels = [](const render::Image& image) {
+    size_t n = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 320; x < 1280 - 370; ++x) n += image.pixel(x, y)[1] > 170 && image.pixel(x, y)[0] < 110 && image.pixel(x, y)[2] < 110;
+    return n;
+  };
+  const fs::path with = dir / "with.png", without = dir / "without.png";
+  const CommandResult r = runWithDisplay("view " + quoted(sharedLog()) + " --ground-labels " + quoted(labels) +
+                                             " --frames 2 --exit --screenshot " + quoted(with), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(runWithDisplay("view " + quoted(sharedLog()) + " --frames 2 --exit --screenshot " + quoted(without), dir).status, 0);
+  EXPECT_GT(greenPixels(readPng(with)), greenPixels(readPng(without)) + 2000);
+}
+
 class ViewCommandBadInput : public ::testing::TestWithParam<BadInput> {};
 
 // Refused before any window opens: one line, exit 2, no display needed.
@@ -313,7 +332,8 @@ TEST_P(ViewCommandBadInput, FailsWithOneLine) {
   writeText(dir / "early.tum", "1.0 0 0 0 0 0 0 1\n2.0 1 0 0 0 0 0 1\n");
   std::string args = GetParam().args;
   for (const auto& [key, value] : {std::pair<std::string, std::string>{"LOG", quoted(sharedLog())},
-                                   {"DIR", dir.string()}}) {
+                                   {"DIR", dir.string()},
+                                   {"LABELS", quoted(sharedDataDir() / "labels/7fab2350-7eaf-3b7e-a39d-6937a4c1bede/flow_labels.feather")}}) {
     for (size_t at; (at = args.find(key)) != std::string::npos;) args.replace(at, key.size(), value);
   }
   const CommandResult r = runHdprior("view " + args);
@@ -339,7 +359,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"uncovered_odometry", "LOG --frames 1 --exit --odometry DIR/early.tum", "must cover every sweep"},
                       BadInput{"odometry_frame", "LOG --frames 1 --exit --odometry DIR/early.tum --odometry-frame up",
                                    "first or city"},
-                      BadInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"}),
+                      BadInput{"odometry_format_alone", "LOG --frames 1 --exit --odometry-format tum", "needs --odometry"},
+                      BadInput{"labels_of_another_sweep", "LOG --frames 1 --exit --ground-labels LABELS --ground-labels-frame 1",
+                               "has 99229 rows, the sweep 99466 points"},
+                      BadInput{"labels_frame_range", "LOG --frames 1 --exit --ground-labels LABELS --ground-labels-frame 5",
+                               "frame 5 is out of range"},
+                      BadInput{"labels_frame_alone", "LOG --frames 1 --exit --ground-labels-frame 1", "needs --ground-labels"},
+                      BadInput{"missing_labels", "LOG --frames 1 --exit --ground-labels DIR/none.feather", "none.feather"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // The events a run has, counted from its keyframes.json alone: rejected and gated keyframes, changes in
