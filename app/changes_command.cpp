@@ -55,7 +55,8 @@ int runChanges(const ChangesArguments& a) {
     const std::vector<MapChangeLabel> changes = readMapChangeLabels(labels);
     const ChangeScore score = scoreMapChanges(report, changes);
     const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
-    writeFileAtomically(out / "score.json", changeScoreJson(score, crossings));
+    writeFileAtomically(out / "score.json",
+                        changeScoreJson(score, crossings, scoreMapChanges(report, changes, MapElement::LaneBoundary)));
     char b[300];
     std::snprintf(b, sizeof b,
                   "; against map_change.json: %zu of %zu reports near a change, %zu of %zu changes found (crossings: %zu of %zu, %zu of %zu)",
@@ -74,12 +75,18 @@ int runChanges(const ChangesArguments& a) {
     crossingsContradicted += c.verdict == MapVerdict::Contradicted;
     crossingsConsistent += c.verdict == MapVerdict::Consistent;
   }
+  size_t linesContradicted = 0, linesConsistent = 0;
+  for (const LaneLineStretch& s : report.laneLines) {
+    linesContradicted += s.verdict == MapVerdict::Contradicted;
+    linesConsistent += s.verdict == MapVerdict::Consistent;
+  }
   std::printf("changes %s: %zu sweeps over %.2f km, %.2f km of boundary observed; drivable areas: %zu contradicted, "
               "%zu consistent, %zu unobserved; %zu missing surfaces; crossings: %zu contradicted, %zu consistent, "
-              "%zu missing%s; %.1f s; wrote %s\n",
+              "%zu missing; lane-line stretches: %zu contradicted, %zu consistent%s; %.1f s; wrote %s\n",
               log.id().c_str(), report.frames, report.drivenKm, report.observedBoundaryKm, contradicted, consistent,
               report.drivableAreas.size() - contradicted - consistent, report.missing.size(), crossingsContradicted,
-              crossingsConsistent, report.missingCrossings.size(), scored.c_str(), seconds, out.string().c_str());
+              crossingsConsistent, report.missingCrossings.size(), linesContradicted, linesConsistent, scored.c_str(), seconds,
+              out.string().c_str());
   return 0;
 }
 

@@ -64,8 +64,9 @@ LogEvaluation::MapCheck checkMap(const ArgoverseLog& log, const PoseTrajectory& 
   const std::vector<MapChangeLabel> changes = labelled ? readMapChangeLabels(labels) : std::vector<MapChangeLabel>{};
   const ChangeScore score = scoreMapChanges(report, changes);
   const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
-  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score, crossings));
-  return {score, crossings, labelled};
+  const ChangeScore laneLines = scoreMapChanges(report, changes, MapElement::LaneBoundary);
+  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score, crossings, laneLines));
+  return {score, crossings, laneLines, labelled};
 }
 
 // The log run into a temporary folder that replaces OUT/<log id> when complete.

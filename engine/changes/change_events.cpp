@@ -51,6 +51,13 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
     std::snprintf(b, sizeof b, "unmapped crossing: %d paint runs off the map's paint (confidence %.2f)", m.paintRuns, m.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
   }
+  for (const LaneLineStretch& s : report.laneLines) {
+    if (s.verdict != MapVerdict::Contradicted || s.bestFrame < 0) continue;
+    char b[200];
+    std::snprintf(b, sizeof b, "lane %lld %s line: paint %.1f m to its %s, none on it (%d runs, confidence %.2f)", (long long)s.laneId,
+                  s.side.c_str(), std::abs(s.offset), s.offset > 0 ? "left" : "right", s.runsAtOffset, s.confidence);
+    events.push_back({RunEvent::Kind::MapChange, 0, size_t(s.bestFrame), b});
+  }
   std::stable_sort(events.begin(), events.end(), [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });
   return events;
 }

@@ -32,6 +32,9 @@ struct ChangeOptions {
   // Paint this near a painted lane boundary is the line's: the poses are off by up to half a
   // metre and a double line is 0.3 m wide.
   double paintLineReach = 1.0;
+  // Lane lines: paint on them stands out within this range on the real sweeps.
+  double laneRange = 8.0;
+  int laneOffsetRuns = 4;  // paint runs 0.75-1.5 m beside a line, none on it, make the line contradicted
 };
 
 }  // namespace hdprior

@@ -80,6 +80,26 @@ json crossingFeature(const CrossingVerdict& c) {
   return {{"type", "Feature"}, {"geometry", polygon(c.outline)}, {"properties", properties}};
 }
 
+json laneLineFeature(const LaneLineStretch& s) {
+  json evidence = {{"kind", s.verdict == MapVerdict::Contradicted ? "paint_beside_line" : "paint_on_line"},
+                   {"runs_on_line", s.runsOnLine}};
+  if (s.verdict == MapVerdict::Contradicted) evidence["offset_m"] = number(s.offset), evidence["runs_at_offset"] = s.runsAtOffset;
+  json properties = {{"element", "lane_boundary"},
+                     {"id", s.laneId},
+                     {"side", s.side},
+                     {"mark_type", s.markType},
+                     {"stretch", s.index},
+                     {"verdict", verdictName(s.verdict)},
+                     {"confidence", number(s.confidence)},
+                     {"first_frame", s.firstFrame},
+                     {"best_frame", s.bestFrame},
+                     {"evidence", evidence}};
+  if (s.verdict == MapVerdict::Contradicted) properties["change"] = "lane_geometry_change";
+  return {{"type", "Feature"},
+          {"geometry", {{"type", "LineString"}, {"coordinates", coordinates(s.line, false)}}},
+          {"properties", properties}};
+}
+
 json missingCrossingFeature(const MissingCrossing& m) {
   return {{"type", "Feature"},
           {"geometry", polygon(m.outline)},
@@ -104,6 +124,7 @@ std::string changesGeoJson(const MapChangeReport& report, const std::string& log
   for (const CrossingVerdict& c : report.crossings)
     if (c.roadPoints > 0) features.push_back(crossingFeature(c));
   for (const MissingCrossing& m : report.missingCrossings) features.push_back(missingCrossingFeature(m));
+  for (const LaneLineStretch& s : report.laneLines) features.push_back(laneLineFeature(s));
   return json{{"type", "FeatureCollection"}, {"name", logId}, {"crs_note", "city frame of the log, metres"}, {"features", features}}
              .dump(1) +
          "\n";
@@ -120,6 +141,9 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
   json crossings = {{"consistent", 0}, {"contradicted", 0}, {"unobserved", 0}};
   for (const CrossingVerdict& c : report.crossings)
     crossings[verdictName(c.verdict)] = crossings[verdictName(c.verdict)].get<int>() + 1;
+  json laneLines = {{"consistent", 0}, {"contradicted", 0}, {"unobserved", 0}};
+  for (const LaneLineStretch& s : report.laneLines)
+    laneLines[verdictName(s.verdict)] = laneLines[verdictName(s.verdict)].get<int>() + 1;
   for (const BoundaryStretch& s : report.stretches)
     if (s.samples > 0) stretches[verdictName(s.verdict)] = stretches[verdictName(s.verdict)].get<int>() + 1;
   return json{{"log_id", logId},
@@ -131,7 +155,8 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
               {"boundary_stretches", stretches},
               {"missing_surfaces", report.missing.size()},
               {"pedestrian_crossings", crossings},
-              {"missing_crossings", report.missingCrossings.size()}}
+              {"missing_crossings", report.missingCrossings.size()},
+              {"lane_line_stretches", laneLines}}
              .dump(2) +
          "\n";
 }

@@ -16,24 +16,6 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Outline = std::vector<Vec2>;
 
-Outline crossingOutline(const PedestrianCrossing& c) {
-  return {c.edge1.front().head<2>(), c.edge1.back().head<2>(), c.edge2.back().head<2>(), c.edge2.front().head<2>()};
-}
-
-// The outline moved outwards by `margin` on each side (a convex quadrilateral, near a rectangle).
-Outline grown(const Outline& outline, double margin) {
-  Outline out;
-  const size_t n = outline.size();
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2& p = outline[i];
-    const Vec2 a = (p - outline[(i + n - 1) % n]).normalized(), b = (p - outline[(i + 1) % n]).normalized();
-    out.push_back(p + margin * (a + b));
-  }
-  return out;
-}
-
-bool isPainted(const std::string& markType) { return !markType.empty() && markType != "NONE" && markType != "UNKNOWN"; }
-
 int64_t cellKey(const Vec2& city) {
   return (int64_t(std::floor(city.x())) << 32) ^ (int64_t(std::floor(city.y())) & 0xffffffff);
 }
@@ -99,8 +81,8 @@ CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& op
     Crossing crossing;
     crossing.verdict.id = c.id;
     crossing.verdict.outline = crossingOutline(c);
-    crossing.reach = grown(crossing.verdict.outline, 0.5);
-    crossing.explains = grown(crossing.verdict.outline, 1.0);
+    crossing.reach = grownQuad(crossing.verdict.outline, 0.5);
+    crossing.explains = grownQuad(crossing.verdict.outline, 1.0);
     crossings_.push_back(std::move(crossing));
   }
   for (const LaneSegment& lane : map.laneSegments)
@@ -109,7 +91,7 @@ CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& op
       if (line->size() >= 2) {
         std::vector<Vec2> planar;
         for (const Eigen::Vector3d& p : *line) planar.push_back(p.head<2>());
-        (isPainted(*type) ? paintedLines_ : unpaintedLines_).push_back(std::move(planar));
+        (isPaintedMark(*type) ? paintedLines_ : unpaintedLines_).push_back(std::move(planar));
       }
 }
 

@@ -87,6 +87,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   SurfaceEvidence evidence = evidenceGrid(log, poses, sweeps, roadPoints, options);
   const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
   CrossingEvidence crossings(map.vectorMap(), options);
+  LaneLineEvidence laneLines(map.vectorMap(), options);
   size_t frames = 0;
   struct Labelled {
     LabelledSweep sweep;
@@ -103,6 +104,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
     evidence.add(int(sweeps[k]), labelled.sweep, cityTEgo, ground);
     crossings.add(int(sweeps[k]), labelled.paint, cityTEgo);
+    laneLines.add(int(sweeps[k]), labelled.paint, cityTEgo);
     ++frames;
   };
   for (size_t k = 0; k < sweeps.size(); k += 2) {
@@ -116,6 +118,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   MapChangeReport report = judgeMapChanges(std::move(evidence), map, options);
   report.crossings = crossings.verdicts();
   report.missingCrossings = crossings.missing();
+  report.laneLines = laneLines.stretches();
   report.frames = frames;
   report.drivenKm = drivenM / 1000.0;
   return report;

@@ -8,6 +8,7 @@
 #include "engine/changes/boundary_stretch.h"
 #include "engine/changes/change_options.h"
 #include "engine/changes/crossing_check.h"
+#include "engine/changes/lane_line_check.h"
 #include "engine/changes/map_verdict.h"
 #include "engine/changes/missing_surface.h"
 #include "engine/geom/pose_trajectory.h"
@@ -34,6 +35,7 @@ struct MapChangeReport {
   std::vector<MissingSurface> missing;
   std::vector<CrossingVerdict> crossings;  // every pedestrian crossing of the map, in its order (detectMapChanges)
   std::vector<MissingCrossing> missingCrossings;
+  std::vector<LaneLineStretch> laneLines;  // the stretches of painted lane lines with paint runs beside them
   double observedBoundaryKm = 0.0;  // of the map's boundary with a verdict
   SurfaceEvidence evidence;         // what it was judged on
   size_t frames = 0;                // sweeps added to the evidence
@@ -43,8 +45,8 @@ struct MapChangeReport {
 // Adds a sweep every options.frameSpacing metres of the poses (city_T_ego, e.g. a run's
 // optimised trajectory; sweeps they do not cover are left out) to the surface evidence,
 // labelled as the road points are (two sweeps at a time, added in order), and its paint to the
-// crossing evidence; then judges every boundary stretch and crossing and finds the missing
-// surfaces and crossings. progress(done, total) after each sweep; cancel stops between sweeps (the report
+// crossing and lane-line evidence; then judges every boundary stretch, crossing and lane-line
+// stretch and finds the missing surfaces and crossings. progress(done, total) after each sweep; cancel stops between sweeps (the report
 // then covers what was added). Throws Error for an unreadable sweep file, naming it.
 MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, const PoseTrajectory& poses,
                                  const SweepRoadPointOptions& roadPoints, const ChangeOptions& options,

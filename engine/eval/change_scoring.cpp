@@ -31,6 +31,11 @@ struct Place {
 // surface's outline; a contradicted or missing crossing's outline.
 std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapElement element) {
   std::vector<std::vector<Place>> out;
+  if (element == MapElement::LaneBoundary) {
+    for (const LaneLineStretch& s : report.laneLines)
+      if (s.verdict == MapVerdict::Contradicted) out.push_back({{s.line, false}});
+    return out;
+  }
   if (element == MapElement::PedestrianCrossing) {
     for (const CrossingVerdict& c : report.crossings)
       if (c.verdict == MapVerdict::Contradicted) out.push_back({{c.outline, true}});
@@ -80,9 +85,10 @@ nlohmann::json scoreJson(const ChangeScore& s) {
 
 }  // namespace
 
-std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings) {
+std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings, const ChangeScore& laneLines) {
   nlohmann::json j = scoreJson(drivableAreas);
   j["pedestrian_crossing"] = scoreJson(crossings);
+  j["lane_boundary"] = scoreJson(laneLines);
   return j.dump(2) + "\n";
 }
 
@@ -100,7 +106,10 @@ ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<Map
   std::vector<std::vector<Place>> changed;
   std::vector<bool> passed;
   for (const MapChangeLabel& l : labels) {
-    if (l.element != (element == MapElement::DrivableArea ? "drivable_area" : "pedestrian_crossing")) continue;
+    if (l.element != (element == MapElement::DrivableArea         ? "drivable_area"
+                      : element == MapElement::PedestrianCrossing ? "pedestrian_crossing"
+                                                                  : "lane_boundary"))
+      continue;
     changed.push_back(labelPlaces(l));
     passed.push_back(l.routeDistance <= nearRoute);
   }

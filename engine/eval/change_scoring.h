@@ -10,10 +10,10 @@ namespace hdprior {
 
 // {"reports", "reports_near_change", "precision", "changes", "changes_found", "recall", "driven_km",
 // "false_alarms_per_km"} of the drivable areas, and the same of the crossings in
-// "pedestrian_crossing" (null where undefined).
-std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings);
+// "pedestrian_crossing" and of the lane lines in "lane_boundary" (null where undefined).
+std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings, const ChangeScore& laneLines);
 
-enum class MapElement { DrivableArea, PedestrianCrossing };
+enum class MapElement { DrivableArea, PedestrianCrossing, LaneBoundary };
 
 // The reports of one element scored against the labelled changes of that element.
 ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels,

@@ -164,6 +164,13 @@ std::string mapCheckMarkdown(const EvalSummary& s) {
                   c->reports ? number(c->precision(), 2).c_str() : "n/a");
     md += b;
   }
+  if (const auto& c = s.laneLineCheck) {
+    std::snprintf(b, sizeof b,
+                  "\nLane lines (paint within 8 m of the lidar), every checked log: %zu contradicted stretches over %.2f km, %.2f per km "
+                  "(%zu near a labelled lane change).\n",
+                  c->reports, c->drivenKm, c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0, c->reportsNearChange);
+    md += b;
+  }
   if (const auto& c = s.crossingCheckUnlabelled) {
     std::snprintf(b, sizeof b, "\nCrossings, the logs without labelled changes: %zu reports, %.2f per km.\n", c->reports,
                   c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);

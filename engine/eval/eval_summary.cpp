@@ -62,6 +62,8 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
       if (!sum) sum.emplace(), crossings.emplace();
       *sum += log.mapCheck->score;
       *crossings += log.mapCheck->crossings;
+      if (!s.laneLineCheck) s.laneLineCheck.emplace();
+      *s.laneLineCheck += log.mapCheck->laneLines;
       ++(log.mapCheck->labelled ? s.mapCheckLabelledLogs : s.mapCheckUnlabelledLogs);
     }
     if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {

@@ -26,6 +26,7 @@ struct LogEvaluation {
   struct MapCheck {
     ChangeScore score;      // drivable areas
     ChangeScore crossings;  // pedestrian crossings
+    ChangeScore laneLines;  // contradicted lane-line stretches (the simulator labels no lane change)
     bool labelled = false;
   };
   std::optional<MapCheck> mapCheck;
@@ -53,6 +54,7 @@ struct EvalSummary {
   // The map checks summed over the logs with labelled changes and over those without.
   std::optional<ChangeScore> mapCheckLabelled, mapCheckUnlabelled;
   std::optional<ChangeScore> crossingCheckLabelled, crossingCheckUnlabelled;  // the same logs' crossings
+  std::optional<ChangeScore> laneLineCheck;  // every checked log's lane lines
   size_t mapCheckLabelledLogs = 0, mapCheckUnlabelledLogs = 0;
 };
 EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);

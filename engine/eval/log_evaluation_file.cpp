@@ -132,10 +132,13 @@ void writeLogEvaluation(const std::filesystem::path& file, const LogEvaluation& 
     if (log.mapCheck) {
       const ChangeScore& c = log.mapCheck->score;
       const ChangeScore& x = log.mapCheck->crossings;
+      const ChangeScore& l = log.mapCheck->laneLines;
       j["map_check"] = {{"labelled", log.mapCheck->labelled}, {"reports", c.reports}, {"reports_near_change", c.reportsNearChange},
                         {"changes", c.changes}, {"changes_found", c.changesFound}, {"driven_km", c.drivenKm},
                         {"crossings", {{"reports", x.reports}, {"reports_near_change", x.reportsNearChange},
-                                       {"changes", x.changes}, {"changes_found", x.changesFound}}}};
+                                       {"changes", x.changes}, {"changes_found", x.changesFound}}},
+                        {"lane_lines", {{"reports", l.reports}, {"reports_near_change", l.reportsNearChange},
+                                        {"changes", l.changes}, {"changes_found", l.changesFound}}}};
     }
   }
   writeFileAtomically(file, j.dump(1) + "\n");
@@ -171,12 +174,16 @@ LogEvaluation readLogEvaluation(const std::filesystem::path& file) {
     const json& labelled = r.member(m, "labelled", "the result.map_check");
     if (!labelled.is_boolean()) throw Error(file.string(), "the result.map_check.labelled is not true or false");
     const json& x = r.member(m, "crossings", "the result.map_check");
+    const json& l = r.member(m, "lane_lines", "the result.map_check");
     const char* crossings = "the result.map_check.crossings";
+    const char* lines = "the result.map_check.lane_lines";
     const double km = r.number(m, "driven_km", "the result.map_check");
     log.mapCheck = LogEvaluation::MapCheck{{r.count(m, "reports", "the result.map_check"), r.count(m, "reports_near_change", "the result.map_check"),
                                             r.count(m, "changes", "the result.map_check"), r.count(m, "changes_found", "the result.map_check"), km},
                                            {r.count(x, "reports", crossings), r.count(x, "reports_near_change", crossings),
                                             r.count(x, "changes", crossings), r.count(x, "changes_found", crossings), km},
+                                           {r.count(l, "reports", lines), r.count(l, "reports_near_change", lines),
+                                            r.count(l, "changes", lines), r.count(l, "changes_found", lines), km},
                                            labelled.get<bool>()};
   }
   return log;

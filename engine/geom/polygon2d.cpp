@@ -90,4 +90,25 @@ Vec2 leftNormal(const Vec2& a, const Vec2& b) {
   return {-d.y(), d.x()};
 }
 
+Ring2 crossingOutline(const PedestrianCrossing& c) {
+  Ring2 out;
+  for (const Eigen::Vector3d& p : c.edge1) out.push_back(p.head<2>());
+  const Ring2 second = ringOf(c.edge2);
+  const bool sameWay = second.size() < 2 || out.size() < 2 || (out.back() - out.front()).dot(second.back() - second.front()) >= 0.0;
+  if (sameWay) out.insert(out.end(), second.rbegin(), second.rend());
+  else out.insert(out.end(), second.begin(), second.end());
+  return out;
+}
+
+Ring2 grownQuad(const Ring2& quad, double margin) {
+  Ring2 out;
+  const size_t n = quad.size();
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d& p = quad[i];
+    const Eigen::Vector2d a = (p - quad[(i + n - 1) % n]).normalized(), b = (p - quad[(i + 1) % n]).normalized();
+    out.push_back(p + margin * (a + b));
+  }
+  return out;
+}
+
 }  // namespace hdprior

@@ -22,6 +22,10 @@ double segmentDistance(const Eigen::Vector2d& a0, const Eigen::Vector2d& a1, con
 // Nearest distance between two polylines (a single point is a polyline too); `closedB` adds
 // b's closing edge. +infinity when either is empty.
 double polylineDistance(std::span<const Eigen::Vector2d> a, std::span<const Eigen::Vector2d> b, bool closedB);
+// A crossing's outline: edge1, then edge2 back (a quadrilateral, whichever way edge2 runs).
+Ring2 crossingOutline(const PedestrianCrossing& crossing);
+// A convex quadrilateral near a rectangle moved outwards by `margin` on each side.
+Ring2 grownQuad(const Ring2& quad, double margin);
 // Unit normal to the left of a -> b.
 Eigen::Vector2d leftNormal(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 

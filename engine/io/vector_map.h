@@ -31,6 +31,11 @@ struct PedestrianCrossing {
   Polyline3 edge1, edge2;  // two points each
 };
 
+// Whether a lane boundary's mark type is painted on the road (not NONE or UNKNOWN).
+inline bool isPaintedMark(const std::string& markType) {
+  return !markType.empty() && markType != "NONE" && markType != "UNKNOWN";
+}
+
 // The Argoverse 2 vector map (log_map_archive_*.json), each list sorted by id.
 struct VectorMap {
   std::vector<DrivableArea> drivableAreas;

@@ -19,15 +19,6 @@ double reach(const DrivableLookup& drivable, const Vec2& from, const Vec2& dir) 
 
 }  // namespace
 
-Ring2 crossingOutline(const PedestrianCrossing& c) {
-  Ring2 out;
-  for (const Eigen::Vector3d& p : c.edge1) out.push_back(p.head<2>());
-  const Ring2 second = ringOf(c.edge2);
-  const bool sameWay = second.size() < 2 || out.size() < 2 || (out.back() - out.front()).dot(second.back() - second.front()) >= 0.0;
-  if (sameWay) out.insert(out.end(), second.rbegin(), second.rend());
-  else out.insert(out.end(), second.begin(), second.end());
-  return out;
-}
 
 std::vector<PedestrianCrossing> crosswalkSites(const VectorMap& world) {
   const DrivableLookup drivable(world);

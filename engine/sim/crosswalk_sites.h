@@ -6,9 +6,6 @@
 
 namespace hdprior {
 
-// A crossing's outline: edge1, then edge2 back (a quadrilateral).
-Ring2 crossingOutline(const PedestrianCrossing& crossing);
-
 // Where a crossing could be painted that the world does not have: across a street 6-9 m from
 // where it leaves a junction (a lane whose predecessor or successor is an intersection lane),
 // kerb to kerb of the world's drivable area, shaped like the towns' crossings (edges across the

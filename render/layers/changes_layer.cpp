@@ -65,6 +65,10 @@ void ChangesLayer::build(const Scene& scene) {
       else if (show_ == 2 && c.roadPoints > 0) strokes.polyline(onGround(scene, c.outline, true), 0.12f, unobserved_);
     }
     for (const MissingCrossing& m : report.missingCrossings) strokes.polyline(onGround(scene, m.outline, true), 0.3f, missing_);
+    for (const LaneLineStretch& s : report.laneLines) {
+      if (s.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, s.line, false), 0.35f, contradicted_);
+      else if (show_ == 2 && s.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, s.line, false), 0.1f, consistent_);
+    }
     if (show_ >= 1) cells = surfaceCells(scene, report.evidence, road_, notRoad_);
   }
   strokes_.upload(strokes, {});

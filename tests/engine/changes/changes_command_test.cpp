@@ -13,6 +13,7 @@
 #include "engine/geom/polygon2d.h"
 #include "engine/io/file_bytes.h"
 #include "moved_crossing.h"
+#include "moved_lane_line.h"
 #include "narrowed_street.h"
 #include "test_data.h"
 
@@ -117,6 +118,37 @@ TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWi
   }
   EXPECT_TRUE(foundMissing) << "no missing crossing near (" << removed.transpose() << ")";
   EXPECT_TRUE(foundDrawn);
+}
+
+// The same drive with the lane line nearest to its start drawn 1.2 m to the line's left: where the
+// lidar sees that line's paint, the map's line is contradicted, the paint 1.2 m to its right.
+TEST(ChangesCommandLaneLines, ALaneLineDrawnBesideItsPaintIsContradicted) {
+  const test::SimulatedDrive drive = test::simulatedTownDrive("changes_lane_lines", 1, 0, 6.0);
+  const fs::path run = drive.folder / "run";
+  ASSERT_EQ(test::runHdprior("run " + test::quoted(drive.log) + " --out " + test::quoted(run)).status, 0);
+  const auto changes = [&](const std::string& name) {
+    const test::CommandResult r = test::runHdprior("changes " + test::quoted(drive.log) + " --run " + test::quoted(run) +
+                                                   " --out " + test::quoted(drive.folder / name));
+    EXPECT_EQ(r.status, 0) << r.err;
+    return summaryOf(drive.folder / name);
+  };
+  const nlohmann::json own = changes("own");
+  EXPECT_GE(own["lane_line_stretches"]["consistent"].get<int>(), 2) << own.dump();
+  EXPECT_EQ(own["lane_line_stretches"]["contradicted"].get<int>(), 0) << own.dump();
+
+  test::moveALaneLine(drive.log, 1.2);
+  const nlohmann::json moved = changes("moved");
+  EXPECT_GE(moved["lane_line_stretches"]["contradicted"].get<int>(), 1) << moved.dump();
+  const nlohmann::json geo = nlohmann::json::parse(test::readFileText(drive.folder / "moved" / "changes.geojson"));
+  int contradicted = 0;
+  for (const nlohmann::json& f : geo["features"]) {
+    const nlohmann::json& p = f["properties"];
+    if (p["element"] != "lane_boundary" || p["verdict"] != "contradicted") continue;
+    ++contradicted;
+    EXPECT_NEAR(std::abs(p["evidence"]["offset_m"].get<double>()), 1.2, 0.3) << p.dump();
+    EXPECT_EQ(p["change"], "lane_geometry_change");
+  }
+  EXPECT_GE(contradicted, 1);
 }
 
 // The real log over its own map (one sweep used: the two are 7 cm apart): the kerbs the sweep shows

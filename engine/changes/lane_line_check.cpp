@@ -1,0 +1,168 @@
+#include "engine/changes/lane_line_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <tuple>
+
+#include "engine/geom/polygon2d.h"
+#include "engine/geom/se2.h"
+
+namespace hdprior {
+
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+constexpr double kCell = 5.0;       // metres, of the index of stretches
+constexpr double kBin = 0.25;       // metres, of the offset histogram
+constexpr double kReach = 1.5;      // metres beside a line that its stretch reads
+constexpr double kOnLine = 0.5;     // paint this near the line is the line's
+constexpr double kMinOffset = 0.75; // paint nearer than this may be the line seen through a pose error
+
+int64_t indexKey(long cx, long cy) { return (int64_t(cx) << 32) ^ (int64_t(cy) & 0xffffffff); }
+
+// A boundary shared by two lanes (one's left, the other's right, maybe reversed) is one line.
+std::tuple<long, long, long, long> lineKey(const Polyline3& line) {
+  auto q = [](double v) { return std::lround(v * 10.0); };
+  std::tuple<long, long, long, long> a{q(line.front().x()), q(line.front().y()), q(line.back().x()), q(line.back().y())};
+  std::tuple<long, long, long, long> b{q(line.back().x()), q(line.back().y()), q(line.front().x()), q(line.front().y())};
+  return std::min(a, b);
+}
+
+// The pieces of a polyline every `length` metres of arc (the last one may be shorter).
+std::vector<std::vector<Vec2>> piecesOf(const Polyline3& line, double length) {
+  std::vector<std::vector<Vec2>> out(1);
+  double arc = 0.0;
+  out.back().push_back(line.front().head<2>());
+  for (size_t i = 1; i < line.size(); ++i) {
+    Vec2 a = line[i - 1].head<2>();
+    const Vec2 b = line[i].head<2>();
+    while (arc + (b - a).norm() > length) {
+      const Vec2 cut = a + (b - a).normalized() * (length - arc);
+      out.back().push_back(cut);
+      out.push_back({cut});
+      a = cut;
+      arc = 0.0;
+    }
+    arc += (b - a).norm();
+    out.back().push_back(b);
+  }
+  if (out.back().size() < 2) out.pop_back();
+  return out;
+}
+
+// The offset of p to the left of a polyline, where p projects inside one of its segments.
+std::optional<double> leftOffset(const std::vector<Vec2>& line, const Vec2& p) {
+  std::optional<double> best;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const Vec2 d = line[i + 1] - line[i];
+    const double length2 = d.squaredNorm();
+    if (length2 < 1e-12) continue;
+    const double t = (p - line[i]).dot(d) / length2;
+    if (t < 0.0 || t > 1.0) continue;
+    const double offset = (d.x() * (p.y() - line[i].y()) - d.y() * (p.x() - line[i].x())) / std::sqrt(length2);
+    if (!best || std::abs(offset) < std::abs(*best)) best = offset;
+  }
+  return best;
+}
+
+}  // namespace
+
+LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options) {
+  std::set<std::tuple<long, long, long, long>> seen;
+  for (const LaneSegment& lane : map.laneSegments)
+    for (const auto& [line, type, side] : {std::tuple{&lane.leftLaneBoundary, &lane.leftLaneMarkType, "left"},
+                                           std::tuple{&lane.rightLaneBoundary, &lane.rightLaneMarkType, "right"}}) {
+      if (line->size() < 2 || !isPaintedMark(*type) || !seen.insert(lineKey(*line)).second) continue;
+      int index = 0;
+      for (std::vector<Vec2>& piece : piecesOf(*line, options.stretchLength)) {
+        Stretch s;
+        s.judged.laneId = lane.id;
+        s.judged.side = side;
+        s.judged.markType = *type;
+        s.judged.index = index++;
+        s.judged.line = std::move(piece);
+        const size_t k = stretches_.size();
+        std::set<int64_t> cells;
+        for (const Vec2& p : s.judged.line)
+          for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy) cells.insert(indexKey(long(std::floor(p.x() / kCell)) + dx, long(std::floor(p.y() / kCell)) + dy));
+        for (int64_t c : cells) cells_[c].push_back(k);
+        stretches_.push_back(std::move(s));
+      }
+    }
+  for (const PedestrianCrossing& c : map.pedestrianCrossings)
+    if (c.edge1.size() >= 2 && c.edge2.size() >= 2) crossings_.push_back(grownQuad(crossingOutline(c), 1.0));
+}
+
+void LaneLineEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTEgo) {
+  const Eigen::Matrix2d r = Eigen::Rotation2Dd(yawOf(cityTEgo)).toRotationMatrix();
+  const Vec2 t = cityTEgo.translation().head<2>();
+  std::vector<std::pair<size_t, double>> beside;  // each run's nearest stretch and its offset to it
+  int on = 0, off = 0;
+  for (const PaintRun& run : paint.runs) {
+    if (run.centre.norm() > options_.laneRange) continue;
+    const std::optional<std::pair<size_t, double>> b = nearestStretch(r * run.centre + t);
+    if (!b) continue;
+    beside.push_back(*b);
+    on += std::abs(b->second) < kOnLine;
+    off += std::abs(b->second) >= kMinOffset;
+  }
+  // A map change moves a line or two; a pose that is off moves the paint of every line in view.
+  if (off >= 3 && off > on) {
+    ++misalignedFrames_;
+    return;
+  }
+  for (const auto& [k, offset] : beside) addRun(frame, stretches_[k], offset);
+}
+
+std::optional<std::pair<size_t, double>> LaneLineEvidence::nearestStretch(const Vec2& city) const {
+  for (const auto& crossing : crossings_)
+    if (ringContains(crossing, city)) return std::nullopt;
+  const auto cell = cells_.find(indexKey(long(std::floor(city.x() / kCell)), long(std::floor(city.y() / kCell))));
+  if (cell == cells_.end()) return std::nullopt;
+  std::optional<std::pair<size_t, double>> best;
+  for (size_t k : cell->second) {
+    const std::optional<double> o = leftOffset(stretches_[k].judged.line, city);
+    if (o && std::abs(*o) < kReach && (!best || std::abs(*o) < std::abs(best->second))) best = {k, *o};
+  }
+  return best;
+}
+
+void LaneLineEvidence::addRun(int frame, Stretch& s, double offset) {
+  ++s.runs[std::clamp(int(std::floor((offset + kReach) / kBin)), 0, kBins - 1)];
+  if (s.judged.firstFrame < 0) s.judged.firstFrame = frame;
+  s.frameRuns = s.lastFrame == frame ? s.frameRuns + 1 : 1;
+  s.lastFrame = frame;
+  if (s.frameRuns > s.bestRuns) s.bestRuns = s.frameRuns, s.judged.bestFrame = frame;
+}
+
+std::vector<LaneLineStretch> LaneLineEvidence::stretches() const {
+  std::vector<LaneLineStretch> out;
+  for (const Stretch& s : stretches_) {
+    if (s.judged.firstFrame < 0) continue;
+    LaneLineStretch j = s.judged;
+    const auto centreOf = [](int bin) { return -kReach + (bin + 0.5) * kBin; };
+    for (int b = 0; b < kBins; ++b) j.runsOnLine += std::abs(centreOf(b)) < kOnLine ? s.runs[b] : 0;
+    // The busiest half metre (two bins) wholly beyond kMinOffset.
+    for (int b = 0; b + 1 < kBins; ++b) {
+      const double lo = centreOf(b) - kBin / 2, hi = centreOf(b + 1) + kBin / 2;
+      if (lo * hi <= 0.0 || std::min(std::abs(lo), std::abs(hi)) < kMinOffset) continue;
+      const int runs = s.runs[b] + s.runs[b + 1];
+      if (runs > j.runsAtOffset) j.runsAtOffset = runs, j.offset = (s.runs[b] * centreOf(b) + s.runs[b + 1] * centreOf(b + 1)) / runs;
+    }
+    if (j.runsOnLine > 0) {
+      j.verdict = MapVerdict::Consistent;
+      j.confidence = 1.0 - std::exp(-double(j.runsOnLine) / 2.0);
+    } else if (j.runsAtOffset >= options_.laneOffsetRuns) {
+      j.verdict = MapVerdict::Contradicted;
+      j.confidence = 1.0 - std::exp(-double(j.runsAtOffset) / double(options_.laneOffsetRuns));
+    }
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+}  // namespace hdprior
