@@ -140,9 +140,9 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
     v.roadPoints += inside;
     v.paintRuns += painted;
     if (v.firstFrame < 0) v.firstFrame = frame;
-    if (painted > c.bestFrameRuns || (painted == c.bestFrameRuns && inside > c.bestFrameGround)) {
+    if (painted > c.bestFrameRuns || (painted == c.bestFrameRuns && inside > c.bestFrameRoadPoints)) {
       c.bestFrameRuns = painted;
-      c.bestFrameGround = inside;
+      c.bestFrameRoadPoints = inside;
       v.bestFrame = frame;
     }
   }

@@ -55,7 +55,7 @@ class CrossingEvidence {
     CrossingVerdict verdict;
     std::vector<Eigen::Vector2d> reach;     // the outline grown by half a metre: paint at the mapped edge counts
     std::vector<Eigen::Vector2d> explains;  // grown by a metre: paint here is the crossing's, never a missing one
-    int bestFrameRuns = -1, bestFrameGround = -1;
+    int bestFrameRuns = -1, bestFrameRoadPoints = -1;
   };
   struct StrayRun {
     Eigen::Vector2d city;
