@@ -21,6 +21,12 @@ json coordinates(const std::vector<Eigen::Vector2d>& points, bool closed) {
 
 json number(double v) { return std::isfinite(v) ? json(std::round(v * 1000.0) / 1000.0) : json(nullptr); }
 
+json lineString(const std::vector<Eigen::Vector2d>& line) { return {{"type", "LineString"}, {"coordinates", coordinates(line, false)}}; }
+
+json feature(const json& geometry, const json& properties) {
+  return {{"type", "Feature"}, {"geometry", geometry}, {"properties", properties}};
+}
+
 json polygon(const std::vector<Eigen::Vector2d>& outline) {
   return {{"type", "Polygon"}, {"coordinates", json::array({coordinates(outline, true)})}};
 }
@@ -43,9 +49,7 @@ json stretchFeature(const BoundaryStretch& s) {
                      {"best_frame", s.bestFrame},
                      {"evidence", evidence}};
   if (s.verdict == MapVerdict::Contradicted) properties["change"] = "lane_geometry_change";
-  return {{"type", "Feature"},
-          {"geometry", {{"type", "LineString"}, {"coordinates", coordinates(s.line, false)}}},
-          {"properties", properties}};
+  return feature(lineString(s.line), properties);
 }
 
 json missingFeature(const MissingSurface& m) {
@@ -77,7 +81,7 @@ json crossingFeature(const CrossingVerdict& c) {
                      {"best_frame", c.bestFrame},
                      {"evidence", {{"kind", "paint"}, {"road_points", c.roadPoints}, {"paint_runs", c.paintRuns}}}};
   if (c.verdict == MapVerdict::Contradicted) properties["change"] = "insert_crosswalk";
-  return {{"type", "Feature"}, {"geometry", polygon(c.outline)}, {"properties", properties}};
+  return feature(polygon(c.outline), properties);
 }
 
 json laneLineFeature(const LaneLineStretch& s) {
@@ -95,9 +99,7 @@ json laneLineFeature(const LaneLineStretch& s) {
                      {"best_frame", s.bestFrame},
                      {"evidence", evidence}};
   if (s.verdict == MapVerdict::Contradicted) properties["change"] = "lane_geometry_change";
-  return {{"type", "Feature"},
-          {"geometry", {{"type", "LineString"}, {"coordinates", coordinates(s.line, false)}}},
-          {"properties", properties}};
+  return feature(lineString(s.line), properties);
 }
 
 json missingCrossingFeature(const MissingCrossing& m) {

@@ -84,17 +84,26 @@ TEST_F(ChangesCommand, BadInputIsOneLineAndNothingIsWritten) {
   EXPECT_FALSE(fs::exists(out / "summary.json"));
 }
 
+// `hdprior run` of a drive into its folder's run/.
+::testing::AssertionResult runDrive(const test::SimulatedDrive& drive) {
+  const test::CommandResult r = test::runHdprior("run " + test::quoted(drive.log) + " --out " + test::quoted(drive.folder / "run"));
+  if (r.status != 0) return ::testing::AssertionFailure() << r.err;
+  return ::testing::AssertionSuccess();
+}
+
+// `hdprior changes` of the drive along that run into its folder's `name`/; its summary.json.
+nlohmann::json changesOverTheRun(const test::SimulatedDrive& drive, const std::string& name) {
+  const test::CommandResult r = test::runHdprior("changes " + test::quoted(drive.log) + " --run " + test::quoted(drive.folder / "run") +
+                                                 " --out " + test::quoted(drive.folder / name));
+  EXPECT_EQ(r.status, 0) << r.err;
+  return summaryOf(drive.folder / name);
+}
+
 // Town 1's 6 s drive passes over two painted crossings.
 TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWithoutPaintIsContradicted) {
   const test::SimulatedDrive drive = test::simulatedTownDrive("changes_crossings", 1, 0, 6.0);
-  const fs::path run = drive.folder / "run";
-  ASSERT_EQ(test::runHdprior("run " + test::quoted(drive.log) + " --out " + test::quoted(run)).status, 0);
-  const auto changes = [&](const std::string& name) {
-    const test::CommandResult r = test::runHdprior("changes " + test::quoted(drive.log) + " --run " + test::quoted(run) +
-                                                   " --out " + test::quoted(drive.folder / name));
-    EXPECT_EQ(r.status, 0) << r.err;
-    return summaryOf(drive.folder / name);
-  };
+  ASSERT_TRUE(runDrive(drive));
+  const auto changes = [&](const std::string& name) { return changesOverTheRun(drive, name); };
   const nlohmann::json own = changes("own");
   EXPECT_GE(own["pedestrian_crossings"]["consistent"].get<int>(), 2) << own.dump();
   EXPECT_EQ(own["pedestrian_crossings"]["contradicted"].get<int>(), 0) << own.dump();
@@ -124,14 +133,8 @@ TEST(ChangesCommandCrossings, APaintedCrossingTheMapLacksIsMissingAndADrawnOneWi
 // lidar sees that line's paint, the map's line is contradicted, the paint 1.2 m to its right.
 TEST(ChangesCommandLaneLines, ALaneLineDrawnBesideItsPaintIsContradicted) {
   const test::SimulatedDrive drive = test::simulatedTownDrive("changes_lane_lines", 1, 0, 6.0);
-  const fs::path run = drive.folder / "run";
-  ASSERT_EQ(test::runHdprior("run " + test::quoted(drive.log) + " --out " + test::quoted(run)).status, 0);
-  const auto changes = [&](const std::string& name) {
-    const test::CommandResult r = test::runHdprior("changes " + test::quoted(drive.log) + " --run " + test::quoted(run) +
-                                                   " --out " + test::quoted(drive.folder / name));
-    EXPECT_EQ(r.status, 0) << r.err;
-    return summaryOf(drive.folder / name);
-  };
+  ASSERT_TRUE(runDrive(drive));
+  const auto changes = [&](const std::string& name) { return changesOverTheRun(drive, name); };
   const nlohmann::json own = changes("own");
   EXPECT_GE(own["lane_line_stretches"]["consistent"].get<int>(), 2) << own.dump();
   EXPECT_EQ(own["lane_line_stretches"]["contradicted"].get<int>(), 0) << own.dump();
