@@ -15,8 +15,8 @@
 namespace hdprior::test {
 
 // Moves it `metres` to its left (a constant shift: its direction at the point nearest to the first
-// pose). Returns the distance from the first pose to the line before the move.
-inline double moveALaneLine(const std::filesystem::path& log, double metres) {
+// pose). Returns the line as the map now draws it.
+inline Ring2 moveALaneLine(const std::filesystem::path& log, double metres) {
   const ArgoverseLog opened(log);
   const Eigen::Vector2d first = opened.cityTEgoAtSweeps().poses().front().translation().head<2>();
   VectorMap map = readVectorMap(opened.mapFiles().vectorMap);
@@ -46,7 +46,9 @@ inline double moveALaneLine(const std::filesystem::path& log, double metres) {
       if (same(*line))
         for (Eigen::Vector3d& v : *line) v.head<2>() += metres * left;
   writeFileAtomically(opened.mapFiles().vectorMap, vectorMapToJson(map));
-  return best;
+  Ring2 moved;
+  for (const Eigen::Vector3d& v : original) moved.push_back(v.head<2>() + metres * left);
+  return moved;
 }
 
 }  // namespace hdprior::test

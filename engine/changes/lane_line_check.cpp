@@ -23,14 +23,6 @@ constexpr double kMinOffset = 0.75; // paint nearer than this may be the line se
 
 int64_t indexKey(long cx, long cy) { return (int64_t(cx) << 32) ^ (int64_t(cy) & 0xffffffff); }
 
-// A boundary shared by two lanes (one's left, the other's right, maybe reversed) is one line.
-std::tuple<long, long, long, long> lineKey(const Polyline3& line) {
-  auto q = [](double v) { return std::lround(v * 10.0); };
-  std::tuple<long, long, long, long> a{q(line.front().x()), q(line.front().y()), q(line.back().x()), q(line.back().y())};
-  std::tuple<long, long, long, long> b{q(line.back().x()), q(line.back().y()), q(line.front().x()), q(line.front().y())};
-  return std::min(a, b);
-}
-
 // The pieces of a polyline every `length` metres of arc (the last one may be shorter).
 std::vector<std::vector<Vec2>> piecesOf(const Polyline3& line, double length) {
   std::vector<std::vector<Vec2>> out(1);
@@ -71,11 +63,11 @@ std::optional<double> leftOffset(const std::vector<Vec2>& line, const Vec2& p) {
 }  // namespace
 
 LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options) {
-  std::set<std::tuple<long, long, long, long>> seen;
+  std::set<LaneLineKey> seen;
   for (const LaneSegment& lane : map.laneSegments)
     for (const auto& [line, type, side] : {std::tuple{&lane.leftLaneBoundary, &lane.leftLaneMarkType, "left"},
                                            std::tuple{&lane.rightLaneBoundary, &lane.rightLaneMarkType, "right"}}) {
-      if (line->size() < 2 || !isPaintedMark(*type) || !seen.insert(lineKey(*line)).second) continue;
+      if (line->size() < 2 || !isPaintedMark(*type) || !seen.insert(laneLineKey(*line)).second) continue;
       int index = 0;
       for (std::vector<Vec2>& piece : piecesOf(*line, options.stretchLength)) {
         Stretch s;

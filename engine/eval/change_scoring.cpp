@@ -55,7 +55,7 @@ std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapE
 
 std::vector<Place> labelPlaces(const MapChangeLabel& l) {
   std::vector<Place> out;
-  const bool stretch = l.change == "narrowed" || l.change == "kerb_moved";
+  const bool stretch = l.change == "narrowed" || l.change == "kerb_moved" || l.change == "lane_line_moved";
   for (const Line& line : l.places) out.push_back({line, !stretch});
   return out;
 }

@@ -142,39 +142,43 @@ namespace {
 std::string mapCheckMarkdown(const EvalSummary& s) {
   std::string md;
   char b[400];
-  if (const auto& c = s.mapCheckLabelled) {
+  const auto ratio = [](size_t of, double v) { return of ? number(v, 2) : std::string("n/a"); };
+  if (const auto& m = s.mapCheckLabelled) {
+    const ChangeScore& c = m->drivableAreas;
     std::snprintf(b, sizeof b,
                   "\nMap check on %zu logs with labelled map changes (drivable areas; 5 m, 15 m from the drive): %zu of %zu changes "
                   "found (recall %s), %zu of %zu reports near a change (precision %s), %.2f false alarms per km over %.2f km.\n",
-                  s.mapCheckLabelledLogs, c->changesFound, c->changes, c->changes ? number(c->recall(), 2).c_str() : "n/a",
-                  c->reportsNearChange, c->reports, c->reports ? number(c->precision(), 2).c_str() : "n/a",
-                  c->drivenKm > 0 ? double(c->falseAlarms()) / c->drivenKm : 0.0, c->drivenKm);
+                  m->logs, c.changesFound, c.changes, ratio(c.changes, c.recall()).c_str(), c.reportsNearChange,
+                  c.reports, ratio(c.reports, c.precision()).c_str(),
+                  c.drivenKm > 0 ? double(c.falseAlarms()) / c.drivenKm : 0.0, c.drivenKm);
     md += b;
   }
-  if (const auto& c = s.mapCheckUnlabelled) {
+  if (const auto& m = s.mapCheckUnlabelled) {
+    const ChangeScore& c = m->drivableAreas;
     std::snprintf(b, sizeof b, "\nMap check on %zu logs without labelled changes: %zu reports (each a false alarm on a current map) over %.2f km, %.2f per km.\n",
-                  s.mapCheckUnlabelledLogs, c->reports, c->drivenKm, c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);
+                  m->logs, c.reports, c.drivenKm, c.drivenKm > 0 ? double(c.reports) / c.drivenKm : 0.0);
     md += b;
   }
-  if (const auto& c = s.crossingCheckLabelled) {
+  const auto labelled = [&](const char* what, const ChangeScore& c) {
     std::snprintf(b, sizeof b,
-                  "\nCrossings (paint within 12 m of the lidar), the same logs with labelled changes: %zu of %zu changes found (recall %s), "
-                  "%zu of %zu reports near a change (precision %s).\n",
-                  c->changesFound, c->changes, c->changes ? number(c->recall(), 2).c_str() : "n/a", c->reportsNearChange, c->reports,
-                  c->reports ? number(c->precision(), 2).c_str() : "n/a");
+                  "\n%s, the same logs with labelled changes: %zu of %zu changes found (recall %s), %zu of %zu reports near a change "
+                  "(precision %s).\n",
+                  what, c.changesFound, c.changes, ratio(c.changes, c.recall()).c_str(), c.reportsNearChange, c.reports,
+                  ratio(c.reports, c.precision()).c_str());
     md += b;
+  };
+  const auto unlabelled = [&](const char* what, const ChangeScore& c) {
+    std::snprintf(b, sizeof b, "\n%s, the logs without labelled changes: %zu reports, %.2f per km.\n", what, c.reports,
+                  c.drivenKm > 0 ? double(c.reports) / c.drivenKm : 0.0);
+    md += b;
+  };
+  if (const auto& m = s.mapCheckLabelled) {
+    labelled("Crossings (paint within 12 m of the lidar)", m->crossings);
+    labelled("Lane lines (paint within 8 m of the lidar, 10 m stretches)", m->laneLines);
   }
-  if (const auto& c = s.laneLineCheck) {
-    std::snprintf(b, sizeof b,
-                  "\nLane lines (paint within 8 m of the lidar), every checked log: %zu contradicted stretches over %.2f km, %.2f per km "
-                  "(%zu near a labelled lane change).\n",
-                  c->reports, c->drivenKm, c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0, c->reportsNearChange);
-    md += b;
-  }
-  if (const auto& c = s.crossingCheckUnlabelled) {
-    std::snprintf(b, sizeof b, "\nCrossings, the logs without labelled changes: %zu reports, %.2f per km.\n", c->reports,
-                  c->drivenKm > 0 ? double(c->reports) / c->drivenKm : 0.0);
-    md += b;
+  if (const auto& m = s.mapCheckUnlabelled) {
+    unlabelled("Crossings", m->crossings);
+    unlabelled("Lane lines", m->laneLines);
   }
   return md;
 }

@@ -57,14 +57,12 @@ EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs) {
     }
     priors.insert(priors.end(), log.priorErrors.begin(), log.priorErrors.end());
     if (log.mapCheck) {
-      std::optional<ChangeScore>& sum = log.mapCheck->labelled ? s.mapCheckLabelled : s.mapCheckUnlabelled;
-      std::optional<ChangeScore>& crossings = log.mapCheck->labelled ? s.crossingCheckLabelled : s.crossingCheckUnlabelled;
-      if (!sum) sum.emplace(), crossings.emplace();
-      *sum += log.mapCheck->score;
-      *crossings += log.mapCheck->crossings;
-      if (!s.laneLineCheck) s.laneLineCheck.emplace();
-      *s.laneLineCheck += log.mapCheck->laneLines;
-      ++(log.mapCheck->labelled ? s.mapCheckLabelledLogs : s.mapCheckUnlabelledLogs);
+      std::optional<EvalSummary::MapCheckSum>& sum = log.mapCheck->labelled ? s.mapCheckLabelled : s.mapCheckUnlabelled;
+      if (!sum) sum.emplace();
+      sum->drivableAreas += log.mapCheck->score;
+      sum->crossings += log.mapCheck->crossings;
+      sum->laneLines += log.mapCheck->laneLines;
+      ++sum->logs;
     }
     if (log.odometry && log.optimized && log.odometry->ate.translation.rmse > 0.0) {
       const double ratio = log.optimized->ate.translation.rmse / log.odometry->ate.translation.rmse;

@@ -26,7 +26,7 @@ struct LogEvaluation {
   struct MapCheck {
     ChangeScore score;      // drivable areas
     ChangeScore crossings;  // pedestrian crossings
-    ChangeScore laneLines;  // contradicted lane-line stretches (the simulator labels no lane change)
+    ChangeScore laneLines;  // painted lane lines
     bool labelled = false;
   };
   std::optional<MapCheck> mapCheck;
@@ -52,10 +52,11 @@ struct EvalSummary {
   size_t logsWorse = 0;
   double worstRatio = 0.0;
   // The map checks summed over the logs with labelled changes and over those without.
-  std::optional<ChangeScore> mapCheckLabelled, mapCheckUnlabelled;
-  std::optional<ChangeScore> crossingCheckLabelled, crossingCheckUnlabelled;  // the same logs' crossings
-  std::optional<ChangeScore> laneLineCheck;  // every checked log's lane lines
-  size_t mapCheckLabelledLogs = 0, mapCheckUnlabelledLogs = 0;
+  struct MapCheckSum {
+    ChangeScore drivableAreas, crossings, laneLines;
+    size_t logs = 0;
+  };
+  std::optional<MapCheckSum> mapCheckLabelled, mapCheckUnlabelled;
 };
 EvalSummary summarizeLogs(const std::vector<LogEvaluation>& logs);
 

@@ -11,8 +11,8 @@ namespace hdprior {
 // One labelled difference between a simulated log's written map and its world (map_change.json,
 // docs/formats.md): what changed and where it lies.
 struct MapChangeLabel {
-  std::string element;  // "drivable_area" or "pedestrian_crossing"
-  std::string change;   // "removed", "shifted", "added", "narrowed", "kerb_moved", "crosswalk_inserted", "crosswalk_deleted"
+  std::string element;  // "drivable_area", "pedestrian_crossing" or "lane_boundary"
+  std::string change;   // "removed", "shifted", "added", "narrowed", "kerb_moved", "crosswalk_inserted", "crosswalk_deleted", "lane_line_moved"
   int64_t id = 0;
   // Where it differs: the changed stretch when there is one, else the world's and the map's outlines.
   std::vector<std::vector<Eigen::Vector2d>> places;

@@ -1,8 +1,11 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -34,6 +37,16 @@ struct PedestrianCrossing {
 // Whether a lane boundary's mark type is painted on the road (not NONE or UNKNOWN).
 inline bool isPaintedMark(const std::string& markType) {
   return !markType.empty() && markType != "NONE" && markType != "UNKNOWN";
+}
+
+// A boundary two lanes share (one's left, the other's right, maybe reversed) is one line: its key
+// is its end points to a decimetre, in a fixed order.
+using LaneLineKey = std::tuple<long, long, long, long>;
+inline LaneLineKey laneLineKey(const Polyline3& line) {
+  auto a = std::make_pair(std::lround(line.front().x() * 10), std::lround(line.front().y() * 10));
+  auto b = std::make_pair(std::lround(line.back().x() * 10), std::lround(line.back().y() * 10));
+  if (b < a) std::swap(a, b);
+  return {a.first, a.second, b.first, b.second};
 }
 
 // The Argoverse 2 vector map (log_map_archive_*.json), each list sorted by id.

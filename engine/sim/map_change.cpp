@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -120,6 +122,76 @@ void changeCrossings(const VectorMap& world, const MapChangeOptions& o, const Ri
             [](const PedestrianCrossing& a, const PedestrianCrossing& b) { return a.id < b.id; });
 }
 
+// The line moved `offset` metres to its left, vertex by vertex (along the mean of the adjacent
+// segments' normals).
+Polyline3 movedLine(const Polyline3& line, double offset) {
+  Polyline3 out = line;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const Vec2 a = line[i == 0 ? 0 : i - 1].head<2>(), b = line[i + 1 < line.size() ? i + 1 : i].head<2>();
+    out[i].head<2>() += offset * leftNormal(a, b);
+  }
+  return out;
+}
+
+Ring2 plan(const Polyline3& line) {
+  Ring2 out;
+  for (const Eigen::Vector3d& p : line) out.push_back(p.head<2>());
+  return out;
+}
+
+void changeLaneLines(const VectorMap& world, const MapChangeOptions& o, const Ring2& drive, uint64_t seed,
+                     ChangedMap& out) {
+  // Painted lines outside intersections, by key: the first lane and side that has each, and how many do.
+  std::map<LaneLineKey, std::pair<const LaneSegment*, bool>> first;
+  std::map<LaneLineKey, int> lanes;
+  for (const LaneSegment& lane : world.laneSegments) {
+    if (lane.isIntersection) continue;
+    for (bool left : {true, false}) {
+      const Polyline3& line = left ? lane.leftLaneBoundary : lane.rightLaneBoundary;
+      if (line.size() < 2 || !isPaintedMark(left ? lane.leftLaneMarkType : lane.rightLaneMarkType)) continue;
+      const LaneLineKey key = laneLineKey(line);
+      first.try_emplace(key, &lane, left);
+      ++lanes[key];
+    }
+  }
+  std::vector<LaneLineKey> eligible;
+  for (const auto& [key, owner] : first) {
+    const Polyline3& line = owner.second ? owner.first->leftLaneBoundary : owner.first->rightLaneBoundary;
+    if (lanes[key] == 2 && (!o.withinM || polylineDistance(drive, plan(line), false) <= *o.withinM)) eligible.push_back(key);
+  }
+  std::mt19937_64 rng(seed ^ 0x51e4b0d7ULL);
+  std::shuffle(eligible.begin(), eligible.end(), rng);
+  size_t count = changeCount(o.fraction, eligible.size());
+  std::set<int64_t> narrowed;  // lanes with a line moved: their other line stays, or the lane would vanish
+  for (const LaneLineKey& key : eligible) {
+    if (count == 0) break;
+    const auto [lane, left] = first.at(key);
+    const Polyline3& line = left ? lane->leftLaneBoundary : lane->rightLaneBoundary;
+    std::vector<int64_t> sharing;
+    for (const LaneSegment& l : world.laneSegments)
+      if ((l.leftLaneBoundary.size() >= 2 && laneLineKey(l.leftLaneBoundary) == key) ||
+          (l.rightLaneBoundary.size() >= 2 && laneLineKey(l.rightLaneBoundary) == key))
+        sharing.push_back(l.id);
+    if (std::any_of(sharing.begin(), sharing.end(), [&](int64_t id) { return narrowed.count(id) > 0; })) continue;
+    narrowed.insert(sharing.begin(), sharing.end());
+    --count;
+    const double offset = (std::uniform_int_distribution<int>(0, 1)(rng) ? 1.0 : -1.0) *
+                          std::uniform_real_distribution<double>(0.5, 1.5)(rng);
+    const Polyline3 moved = movedLine(line, offset);
+    Polyline3 reversed(moved.rbegin(), moved.rend());
+    for (LaneSegment& l : out.map.laneSegments)
+      for (Polyline3* b : {&l.leftLaneBoundary, &l.rightLaneBoundary})
+        if (b->size() >= 2 && laneLineKey(*b) == key) *b = (*b == line) ? moved : reversed;
+    MapChange change;
+    change.kind = Kind::LaneLineMoved;
+    change.id = lane->id;
+    change.changedStretch = plan(moved);
+    change.worldStretch = plan(line);
+    change.offsetM = offset;
+    out.changes.push_back(std::move(change));
+  }
+}
+
 // Nearest distance from the drive to what differs: the changed stretch and where it is in the
 // world, or the element's outlines.
 double routeDistance(const Ring2& drive, const MapChange& c) {
@@ -137,6 +209,7 @@ const char* kindName(Kind k) {
     case Kind::KerbMoved: return "kerb_moved";
     case Kind::CrosswalkInserted: return "crosswalk_inserted";
     case Kind::CrosswalkDeleted: return "crosswalk_deleted";
+    case Kind::LaneLineMoved: return "lane_line_moved";
   }
   return "";
 }
@@ -158,6 +231,7 @@ ChangedMap changeMap(const VectorMap& world, const MapChangeOptions& options, st
   const Ring2 path = thinned(drive, 0.5);
   changeDrivableAreas(world, options, path, seed, out);
   changeCrossings(world, options, path, seed, out);
+  changeLaneLines(world, options, path, seed, out);
   for (MapChange& c : out.changes) c.routeDistanceM = routeDistance(path, c);
   return out;
 }
@@ -168,7 +242,7 @@ std::string mapChangesToJson(const MapChangeOptions& options, const std::vector<
   j["within_m"] = options.withinM ? nlohmann::json(*options.withinM) : nlohmann::json(nullptr);
   j["changes"] = nlohmann::json::array();
   for (const MapChange& c : changes) {
-    nlohmann::json e = {{"element", c.crossing() ? "pedestrian_crossing" : "drivable_area"},
+    nlohmann::json e = {{"element", c.crossing() ? "pedestrian_crossing" : c.laneLine() ? "lane_boundary" : "drivable_area"},
                         {"id", c.id},
                         {"change", kindName(c.kind)},
                         {"tbv_change", c.kind == Kind::CrosswalkInserted  ? "insert_crosswalk"

@@ -19,16 +19,19 @@ struct MapChangeOptions {
 
 // One difference between the written map and the world that was ray-cast.
 struct MapChange {
-  enum class Kind { Removed, Shifted, Added, Narrowed, KerbMoved, CrosswalkInserted, CrosswalkDeleted };
+  enum class Kind { Removed, Shifted, Added, Narrowed, KerbMoved, CrosswalkInserted, CrosswalkDeleted, LaneLineMoved };
   Kind kind = Kind::Removed;
-  int64_t id = 0;                   // the world's id (Removed, CrosswalkDeleted) or the written map's
+  int64_t id = 0;                   // the world's id (Removed, CrosswalkDeleted) or the written map's (LaneLineMoved: the first lane whose boundary it is)
   Ring2 worldOutline, mapOutline;   // empty where the element is absent
-  Ring2 changedStretch;             // Narrowed, KerbMoved: the written boundary that differs ...
+  Ring2 changedStretch;             // Narrowed, KerbMoved, LaneLineMoved: the written boundary that differs ...
   Ring2 worldStretch;               // ... and where it is in the world
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // Shifted: metres, city frame
-  double offsetM = 0.0;             // Narrowed, KerbMoved: how far the boundary moved, + outwards
+  // Narrowed, KerbMoved: how far the boundary moved, + outwards; LaneLineMoved: + to the left of
+  // changedStretch's direction.
+  double offsetM = 0.0;
   double routeDistanceM = 0.0;      // nearest distance from the drive to what differs
   bool crossing() const { return kind == Kind::CrosswalkInserted || kind == Kind::CrosswalkDeleted; }
+  bool laneLine() const { return kind == Kind::LaneLineMoved; }
 };
 
 struct ChangedMap {
@@ -42,8 +45,10 @@ struct ChangedMap {
 // polygon beside it where the world has no road, narrowed (one side moved 1-2.5 m inwards), or
 // has a 10-25 m stretch of kerb moved 1-3 m in or out (tapered over 3 m). Of the eligible
 // crossings as many again in share (at least one when any is eligible or could be inserted) are
-// deleted or inserted (crosswalkSites), even odds. Lanes are kept. Throws Error for a fraction
-// outside [0, 1] or a negative distance.
+// deleted or inserted (crosswalkSites), even odds. Of the eligible painted lane lines that two
+// lanes share (not in an intersection), as many again in share are moved sideways by 0.5-1.5 m
+// in the written map, as a restriping that narrows one lane and widens the other; the world keeps
+// its paint. Throws Error for a fraction outside [0, 1] or a negative distance.
 ChangedMap changeMap(const VectorMap& world, const MapChangeOptions& options, std::span<const Eigen::Vector2d> drive,
                      uint64_t seed);
 // The side-car map_change.json (docs/formats.md).

@@ -26,14 +26,6 @@ std::vector<bool> linesOf(const std::string& type) {
   return {};
 }
 
-// A shared boundary (two lanes' lines, one of them reversed) is painted once.
-std::tuple<long, long, long, long> lineKey(const Polyline3& line) {
-  auto a = std::make_pair(std::lround(line.front().x() * 10), std::lround(line.front().y() * 10));
-  auto b = std::make_pair(std::lround(line.back().x() * 10), std::lround(line.back().y() * 10));
-  if (b < a) std::swap(a, b);
-  return {a.first, a.second, b.first, b.second};
-}
-
 void addLine(const Polyline3& line, const std::string& type, const PaintOptions& options, std::vector<Mark>& marks) {
   const std::vector<bool> lines = linesOf(type);
   if (lines.empty()) return;
@@ -85,7 +77,7 @@ bool covers(const Mark& m, const Vec2& p) {
 
 RoadPaint::RoadPaint(const VectorMap& map, const Vec2& lo, const Vec2& hi, const PaintOptions& options)
     : options_(options) {
-  std::set<std::tuple<long, long, long, long>> painted;
+  std::set<LaneLineKey> painted;
   const auto near = [&](const Polyline3& line) {
     return std::any_of(line.begin(), line.end(), [&](const Eigen::Vector3d& p) {
       return (p.head<2>().array() >= lo.array() - 50.0).all() && (p.head<2>().array() <= hi.array() + 50.0).all();
@@ -94,7 +86,7 @@ RoadPaint::RoadPaint(const VectorMap& map, const Vec2& lo, const Vec2& hi, const
   for (const LaneSegment& lane : map.laneSegments)
     for (const auto& [line, type] : {std::pair(&lane.leftLaneBoundary, &lane.leftLaneMarkType),
                                      std::pair(&lane.rightLaneBoundary, &lane.rightLaneMarkType)})
-      if (line->size() >= 2 && !linesOf(*type).empty() && near(*line) && painted.insert(lineKey(*line)).second)
+      if (line->size() >= 2 && !linesOf(*type).empty() && near(*line) && painted.insert(laneLineKey(*line)).second)
         addLine(*line, *type, options_, marks_);
   for (const PedestrianCrossing& c : map.pedestrianCrossings)
     if (c.edge1.size() >= 2 && c.edge2.size() >= 2 && near(c.edge1)) addCrossing(c, options_, marks_);

@@ -1,5 +1,5 @@
 // `hdprior eval --check-map`: each log's map check beside its run, scored against the log's
-// map_change.json where it has one (a street drawn narrower, labelled), counted as false alarms
+// map_change.json where it has one (a street drawn narrower and a lane line moved, labelled), counted as false alarms
 // where it has none (an unchanged map), and both in the table.
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/vector_map.h"
+#include "moved_lane_line.h"
 #include "narrowed_street.h"
 #include "test_data.h"
 
@@ -18,8 +19,15 @@ namespace hdprior {
 namespace {
 namespace fs = std::filesystem;
 
-// Labels the log's narrowed drivable area as changed: where it lies in the written map.
-void labelChange(const fs::path& log, int64_t id) {
+nlohmann::json points(const Ring2& line) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Eigen::Vector2d& p : line) out.push_back({p.x(), p.y()});
+  return out;
+}
+
+// Labels the log's narrowed drivable area and its moved lane line as changed: where they lie in
+// the written map.
+void labelChanges(const fs::path& log, int64_t id, const Ring2& movedLine) {
   const VectorMap map = readVectorMap(ArgoverseLog(log).mapFiles().vectorMap);
   nlohmann::json outline = nlohmann::json::array();
   for (const DrivableArea& a : map.drivableAreas)
@@ -29,7 +37,9 @@ void labelChange(const fs::path& log, int64_t id) {
       {"fraction", 0.3},
       {"within_m", nullptr},
       {"changes",
-       {{{"element", "drivable_area"}, {"id", id}, {"change", "shifted"}, {"route_distance_m", 0.0}, {"map_outline", outline}}}}};
+       {{{"element", "drivable_area"}, {"id", id}, {"change", "shifted"}, {"route_distance_m", 0.0}, {"map_outline", outline}},
+        {{"element", "lane_boundary"}, {"id", 1}, {"change", "lane_line_moved"}, {"route_distance_m", 0.0},
+         {"changed_stretch", points(movedLine)}, {"offset_m", 1.2}}}}};
   writeFileAtomically(log / "map_change.json", labels.dump());
 }
 
@@ -37,7 +47,8 @@ TEST(EvalCheckMap, ScoresTheLabelledLogAndCountsFalseAlarmsOnTheOther) {
   const fs::path dir = test::freshOutputDir("eval_check_map");
   const fs::path changed = test::copySharedTownDrive(1, 7, 8.0, dir / "logs" / "changed");
   const fs::path current = test::copySharedTownDrive(2, 1, 6.0, dir / "logs" / "current");
-  labelChange(changed, test::narrowStreetAtStart(changed, 2.5));
+  const int64_t narrowed = test::narrowStreetAtStart(changed, 2.5);
+  labelChanges(changed, narrowed, test::moveALaneLine(changed, 1.2));
   const fs::path out = dir / "out";
   const test::CommandResult r = test::runHdprior("eval " + test::quoted(dir / "logs") + " --out " + test::quoted(out) + " -j 2 --check-map");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -54,6 +65,11 @@ TEST(EvalCheckMap, ScoresTheLabelledLogAndCountsFalseAlarmsOnTheOther) {
   EXPECT_NE(table.find("Map check on 1 logs with labelled map changes"), std::string::npos) << table;
   EXPECT_NE(table.find("1 of 1 changes found (recall 1.00)"), std::string::npos) << table;
   EXPECT_NE(table.find("Map check on 1 logs without labelled changes: 0 reports"), std::string::npos) << table;
+  EXPECT_NE(table.find("Lane lines (paint within 8 m of the lidar, 10 m stretches), the same logs with labelled changes: 1 of 1 "
+                       "changes found (recall 1.00)"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("Lane lines, the logs without labelled changes: 0 reports"), std::string::npos) << table;
 }
 
 }  // namespace

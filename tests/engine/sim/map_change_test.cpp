@@ -50,6 +50,41 @@ double distanceTo(const Eigen::Vector2d& p, const Ring2& line, bool closed) {
   return polylineDistance(std::span(&p, 1), line, closed);
 }
 
+// The lanes of `m` (their ids) that have `line` (either way round) as a boundary.
+std::set<int64_t> lanesWithLine(const VectorMap& m, const Ring2& line) {
+  std::set<int64_t> out;
+  const auto same = [&](const Polyline3& b) {
+    if (b.size() != line.size()) return false;
+    bool forward = true, backward = true;
+    for (size_t i = 0; i < b.size(); ++i) {
+      forward &= (b[i].head<2>() - line[i]).norm() < 1e-9;
+      backward &= (b[i].head<2>() - line[line.size() - 1 - i]).norm() < 1e-9;
+    }
+    return forward || backward;
+  };
+  for (const LaneSegment& l : m.laneSegments)
+    if (same(l.leftLaneBoundary) || same(l.rightLaneBoundary)) out.insert(l.id);
+  return out;
+}
+
+// A restriped line: the two lanes that share it in the world share it moved in the written map,
+// 0.5-1.5 m to one side all along; the world (its paint) is untouched.
+void expectMovedLaneLine(const VectorMap& world, const VectorMap& written, const MapChange& c) {
+  const std::set<int64_t> sharing = lanesWithLine(world, c.worldStretch);
+  EXPECT_EQ(sharing.size(), 2u);
+  EXPECT_TRUE(sharing.count(c.id));
+  EXPECT_EQ(lanesWithLine(written, c.changedStretch), sharing);
+  EXPECT_TRUE(lanesWithLine(written, c.worldStretch).empty());
+  EXPECT_GE(std::abs(c.offsetM), 0.5);
+  EXPECT_LE(std::abs(c.offsetM), 1.5);
+  ASSERT_EQ(c.changedStretch.size(), c.worldStretch.size());
+  for (size_t i = 0; i + 1 < c.worldStretch.size(); ++i) {
+    const Eigen::Vector2d left = leftNormal(c.worldStretch[i], c.worldStretch[i + 1]);
+    const Eigen::Vector2d mid = 0.5 * (c.changedStretch[i] + c.changedStretch[i + 1]);
+    EXPECT_NEAR((mid - c.worldStretch[i]).dot(left), c.offsetM, 0.05 * std::abs(c.offsetM));
+  }
+}
+
 // What every change must satisfy, whatever its kind.
 void expectLabelled(const VectorMap& world, const ChangedMap& changed, const MapChange& c) {
   const VectorMap& written = changed.map;
@@ -137,6 +172,9 @@ void expectLabelled(const VectorMap& world, const ChangedMap& changed, const Map
       EXPECT_FALSE(crossingOf(written, c.id));
       EXPECT_EQ(c.worldOutline, crossingOutline(*crossingOf(world, c.id)));
       break;
+    case Kind::LaneLineMoved:
+      expectMovedLaneLine(world, written, c);
+      break;
   }
 }
 
@@ -153,7 +191,7 @@ TEST(MapChange, EveryKindAppearsAndIsLabelled) {
     }
   }
   for (Kind k : {Kind::Removed, Kind::Shifted, Kind::Added, Kind::Narrowed, Kind::KerbMoved, Kind::CrosswalkInserted,
-                 Kind::CrosswalkDeleted})
+                 Kind::CrosswalkDeleted, Kind::LaneLineMoved})
     EXPECT_GT(seen[k], 0) << "kind " << int(k);
   for (const auto& [k, n] : seen) std::printf("[ info ] kind %d: %d changes\n", int(k), n);
 }
@@ -162,22 +200,27 @@ TEST(MapChange, WithinRestrictsTheChangesToElementsNearTheDrive) {
   const TownDrive& t = townDrive();
   const ChangedMap anywhere = changeMap(t.town.vectorMap, {0.3, std::nullopt}, t.drive, 5);
   const ChangedMap near = changeMap(t.town.vectorMap, {0.3, 15.0}, t.drive, 5);
-  const auto count = [](const ChangedMap& m, bool crossing, double within) {
+  enum Element { Area, Crossing, Line };
+  const auto count = [](const ChangedMap& m, Element element, double within) {
     return std::count_if(m.changes.begin(), m.changes.end(), [&](const MapChange& c) {
-      return c.crossing() == crossing && c.routeDistanceM <= within;
+      const Element e = c.crossing() ? Crossing : c.laneLine() ? Line : Area;
+      return e == element && c.routeDistanceM <= within;
     });
   };
   // Anywhere: 30 % of the town's polygons, most of them far from the drive.
-  EXPECT_EQ(count(anywhere, false, 1e9), std::llround(0.3 * double(t.town.vectorMap.drivableAreas.size())));
-  EXPECT_LT(count(anywhere, false, 15.0), count(anywhere, false, 1e9) / 2);
+  EXPECT_EQ(count(anywhere, Area, 1e9), std::llround(0.3 * double(t.town.vectorMap.drivableAreas.size())));
+  EXPECT_LT(count(anywhere, Area, 15.0), count(anywhere, Area, 1e9) / 2);
+  EXPECT_LT(count(anywhere, Line, 15.0), count(anywhere, Line, 1e9) / 2);
   // Near: every change within 15 m, as many as 30 % of the polygons whose outline is near.
   size_t eligible = 0;
   for (const DrivableArea& a : t.town.vectorMap.drivableAreas)
     eligible += polylineDistance(t.drive, ringOf(a.areaBoundary), true) <= 15.0;
-  EXPECT_EQ(count(near, false, 15.0), std::max<long>(1, std::llround(0.3 * double(eligible))));
-  EXPECT_EQ(count(near, false, 1e9), count(near, false, 15.0));
-  EXPECT_GE(count(near, true, 15.0), 1);
-  EXPECT_EQ(count(near, true, 1e9), count(near, true, 15.0));
+  EXPECT_EQ(count(near, Area, 15.0), std::max<long>(1, std::llround(0.3 * double(eligible))));
+  EXPECT_EQ(count(near, Area, 1e9), count(near, Area, 15.0));
+  for (Element e : {Crossing, Line}) {
+    EXPECT_GE(count(near, e, 15.0), 1);
+    EXPECT_EQ(count(near, e, 1e9), count(near, e, 15.0));
+  }
 }
 
 TEST(MapChange, TheSameSeedGivesTheSameChanges) {
@@ -209,21 +252,38 @@ TEST(MapChange, TheSideCarLabelsEachChangeInTbVsVocabulary) {
       EXPECT_TRUE(c["id"].is_number_integer());
       EXPECT_LE(double(c["route_distance_m"]), 15.0 + 1e-6);
       const bool crossing = change.rfind("crosswalk_", 0) == 0;
-      EXPECT_EQ(element, crossing ? "pedestrian_crossing" : "drivable_area");
+      EXPECT_EQ(element, crossing ? "pedestrian_crossing" : change == "lane_line_moved" ? "lane_boundary" : "drivable_area");
       EXPECT_EQ(tbv, change == "crosswalk_inserted" ? "insert_crosswalk"
                      : change == "crosswalk_deleted" ? "delete_crosswalk"
                                                      : "lane_geometry_change");
-      EXPECT_EQ(c.contains("world_outline"), change != "added" && change != "crosswalk_inserted") << change;
-      EXPECT_EQ(c.contains("map_outline"), change != "removed" && change != "crosswalk_deleted") << change;
-      EXPECT_EQ(c.contains("changed_stretch"), change == "narrowed" || change == "kerb_moved") << change;
+      const bool line = change == "lane_line_moved";
+      EXPECT_EQ(c.contains("world_outline"), !line && change != "added" && change != "crosswalk_inserted") << change;
+      EXPECT_EQ(c.contains("map_outline"), !line && change != "removed" && change != "crosswalk_deleted") << change;
+      EXPECT_EQ(c.contains("changed_stretch"), change == "narrowed" || change == "kerb_moved" || change == "lane_line_moved") << change;
       EXPECT_EQ(c.contains("shift_m"), change == "shifted") << change;
       if (c.contains("world_outline")) {
         EXPECT_EQ(c["world_outline"][0].size(), 2u);
       }
     }
   }
-  EXPECT_EQ(changes.size(), 7u);
+  EXPECT_EQ(changes.size(), 8u);
   EXPECT_TRUE(nlohmann::json::parse(mapChangesToJson({0.2, std::nullopt}, {}))["within_m"].is_null());
+}
+
+TEST(MapChange, RestripingMovesAShareOfTheSharedLinesAndNeverBothLinesOfALane) {
+  const TownDrive& t = townDrive();
+  for (uint64_t seed = 1; seed <= 4; ++seed) {
+    const ChangedMap changed = changeMap(t.town.vectorMap, {0.5, 15.0}, t.drive, seed);
+    std::map<int64_t, int> moves;  // lane id -> its lines moved
+    size_t moved = 0;
+    for (const MapChange& c : changed.changes) {
+      if (!c.laneLine()) continue;
+      ++moved;
+      for (int64_t id : lanesWithLine(t.town.vectorMap, c.worldStretch)) ++moves[id];
+    }
+    EXPECT_GE(moved, 2u) << "seed " << seed;
+    for (const auto& [id, n] : moves) EXPECT_EQ(n, 1) << "lane " << id << ", seed " << seed;
+  }
 }
 
 TEST(MapChange, BadValuesAreRefused) {

@@ -174,12 +174,17 @@ TEST(SimLog, MapChangeRecordsEveryDifference) {
       if (a.id == id) return &a;
     return nullptr;
   };
-  size_t removed = 0, added = 0, other = 0, crossings = 0;
+  size_t removed = 0, added = 0, other = 0, crossings = 0, laneLines = 0;
   for (const auto& c : json["changes"]) {
     const int64_t id = c["id"];
     const std::string kind = c["change"];
     if (c["element"] == "pedestrian_crossing") {
       ++crossings;
+      continue;
+    }
+    if (c["element"] == "lane_boundary") {
+      EXPECT_EQ(kind, "lane_line_moved");
+      ++laneLines;
       continue;
     }
     if (kind == "removed") {
@@ -201,7 +206,8 @@ TEST(SimLog, MapChangeRecordsEveryDifference) {
   EXPECT_EQ(removed + added + other, size_t(std::llround(0.4 * double(world.drivableAreas.size()))));
   EXPECT_EQ(crossings, std::max<size_t>(1, size_t(std::llround(0.4 * double(world.pedestrianCrossings.size())))));
   EXPECT_EQ(written.drivableAreas.size(), world.drivableAreas.size() - removed + added);
-  std::printf("[ info ] %zu removed, %zu added, %zu reshaped, %zu crossings\n", removed, added, other, crossings);
+  EXPECT_GE(laneLines, 1u);  // the real map's lanes share their painted lines
+  std::printf("[ info ] %zu removed, %zu added, %zu reshaped, %zu crossings, %zu lane lines\n", removed, added, other, crossings, laneLines);
 }
 
 // Every file under `dir`, relative path -> bytes.
