@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -28,12 +31,15 @@ struct Place {
 };
 
 // Where each report of an element lies: a contradicted area's contradicted stretches, a missing
-// surface's outline; a contradicted or missing crossing's outline.
+// surface's outline; a contradicted or missing crossing's outline; a lane line's contradicted
+// stretches.
 std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapElement element) {
   std::vector<std::vector<Place>> out;
   if (element == MapElement::LaneBoundary) {
+    std::map<std::pair<int64_t, std::string>, std::vector<Place>> byLine;
     for (const LaneLineStretch& s : report.laneLines)
-      if (s.verdict == MapVerdict::Contradicted) out.push_back({{s.line, false}});
+      if (s.verdict == MapVerdict::Contradicted) byLine[{s.laneId, s.side}].push_back({s.line, false});
+    for (auto& [line, places] : byLine) out.push_back(std::move(places));
     return out;
   }
   if (element == MapElement::PedestrianCrossing) {

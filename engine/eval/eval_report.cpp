@@ -174,7 +174,7 @@ std::string mapCheckMarkdown(const EvalSummary& s) {
   };
   if (const auto& m = s.mapCheckLabelled) {
     labelled("Crossings (paint within 12 m of the lidar)", m->crossings);
-    labelled("Lane lines (paint within 8 m of the lidar, 10 m stretches)", m->laneLines);
+    labelled("Lane lines (paint within 8 m of the lidar; a report is a line with contradicted stretches)", m->laneLines);
   }
   if (const auto& m = s.mapCheckUnlabelled) {
     unlabelled("Crossings", m->crossings);

@@ -65,7 +65,7 @@ TEST(EvalCheckMap, ScoresTheLabelledLogAndCountsFalseAlarmsOnTheOther) {
   EXPECT_NE(table.find("Map check on 1 logs with labelled map changes"), std::string::npos) << table;
   EXPECT_NE(table.find("1 of 1 changes found (recall 1.00)"), std::string::npos) << table;
   EXPECT_NE(table.find("Map check on 1 logs without labelled changes: 0 reports"), std::string::npos) << table;
-  EXPECT_NE(table.find("Lane lines (paint within 8 m of the lidar, 10 m stretches), the same logs with labelled changes: 1 of 1 "
+  EXPECT_NE(table.find("Lane lines (paint within 8 m of the lidar; a report is a line with contradicted stretches), the same logs with labelled changes: 1 of 1 "
                        "changes found (recall 1.00)"),
             std::string::npos)
       << table;
