@@ -51,18 +51,10 @@ int runChanges(const ChangesArguments& a) {
       detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{}, [&](size_t d, size_t t) { bar(d, t); });
   writeChangeReport(out, report, log.id());
   std::string scored;
-  if (const std::filesystem::path labels = log.dir() / "map_change.json"; std::filesystem::exists(labels)) {
-    const std::vector<MapChangeLabel> changes = readMapChangeLabels(labels);
-    const ChangeScore score = scoreMapChanges(report, changes);
-    const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
-    writeFileAtomically(out / "score.json",
-                        changeScoreJson(score, crossings, scoreMapChanges(report, changes, MapElement::LaneBoundary)));
-    char b[300];
-    std::snprintf(b, sizeof b,
-                  "; against map_change.json: %zu of %zu reports near a change, %zu of %zu changes found (crossings: %zu of %zu, %zu of %zu)",
-                  score.reportsNearChange, score.reports, score.changesFound, score.changes, crossings.reportsNearChange,
-                  crossings.reports, crossings.changesFound, crossings.changes);
-    scored = b;
+  if (const std::optional<std::vector<MapChangeLabel>> labels = logMapChangeLabels(log.dir())) {
+    const MapCheckScore score = scoreMapCheck(report, *labels);
+    writeFileAtomically(out / "score.json", changeScoreJson(score));
+    scored = "; against map_change.json: " + changeScoreLine(score);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t contradicted = 0, consistent = 0;

@@ -59,14 +59,10 @@ LogEvaluation::MapCheck checkMap(const ArgoverseLog& log, const PoseTrajectory& 
   const std::unique_ptr<HdMap> map = loadCheckedMap(log);
   const MapChangeReport report = detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{});
   writeChangeReport(dir, report, log.id());
-  const fs::path labels = log.dir() / "map_change.json";
-  const bool labelled = fs::exists(labels);
-  const std::vector<MapChangeLabel> changes = labelled ? readMapChangeLabels(labels) : std::vector<MapChangeLabel>{};
-  const ChangeScore score = scoreMapChanges(report, changes);
-  const ChangeScore crossings = scoreMapChanges(report, changes, MapElement::PedestrianCrossing);
-  const ChangeScore laneLines = scoreMapChanges(report, changes, MapElement::LaneBoundary);
-  if (labelled) writeFileAtomically(dir / "score.json", changeScoreJson(score, crossings, laneLines));
-  return {score, crossings, laneLines, labelled};
+  const std::optional<std::vector<MapChangeLabel>> labels = logMapChangeLabels(log.dir());
+  const MapCheckScore score = scoreMapCheck(report, labels.value_or(std::vector<MapChangeLabel>{}));
+  if (labels) writeFileAtomically(dir / "score.json", changeScoreJson(score));
+  return {score.drivableAreas, score.crossings, score.laneLines, labels.has_value()};
 }
 
 // The log run into a temporary folder that replaces OUT/<log id> when complete.

@@ -40,7 +40,8 @@ render::Analysis runAnalysis(const ArgoverseLog& log, const HdMap& map, const Co
   if (given) render::setFileTrajectory(analysis, log.cityTEgoAtSweeps(), givenOdometryInCity(*given, log), given->file);
   if (keyframe) render::inspect(analysis, session, map, *keyframe);
   if (checkMap)
-    render::setMapChanges(analysis, detectMapChanges(log, map, render::finalTrajectory(analysis), config.roadPoints, ChangeOptions{}));
+    render::setMapChanges(analysis, detectMapChanges(log, map, render::finalTrajectory(analysis), config.roadPoints, ChangeOptions{}),
+                          logMapChangeLabels(log.dir()));
   return analysis;
 }
 

@@ -35,16 +35,18 @@ std::vector<double> perSweep(std::vector<double> errors, const std::vector<Skipp
 
 }  // namespace
 
-void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report) {
+void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report,
+                   std::optional<std::vector<MapChangeLabel>> labels) {
   std::vector<RunEvent> run;
   for (const RunEvent& e : analysis.events)
     if (e.kind != RunEvent::Kind::MapChange) run.push_back(e);
   analysis.events = mergedEvents(run, mapChangeEvents(*report));
   analysis.changes = std::move(report);
+  analysis.changeLabels = std::move(labels);
 }
 
-void setMapChanges(Analysis& analysis, MapChangeReport report) {
-  setMapChanges(analysis, std::make_shared<const MapChangeReport>(std::move(report)));
+void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels) {
+  setMapChanges(analysis, std::make_shared<const MapChangeReport>(std::move(report)), std::move(labels));
 }
 
 Analysis analysisOf(const Session& session) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/eval/map_change_labels.h"
 #include "engine/geom/ground_measure.h"
 #include "engine/geom/pose_trajectory.h"
 #include "engine/match/cost_landscape.h"
@@ -59,15 +60,19 @@ struct Analysis {
   std::optional<Comparison> comparison;                // run B, when the user compares
   std::optional<GroundMeasure> measure;                // the user's measurement, drawn by the measure layer
   std::shared_ptr<const MapChangeReport> changes;      // the map check along the final trajectory (the changes layer)
+  // A simulated log's map_change.json, read with the map check: where its map really differs.
+  std::optional<std::vector<MapChangeLabel>> changeLabels;
 };
 
 // The trajectories, per-pose errors and keyframes of a session as it stands.
 Analysis analysisOf(const Session& session);
 // The trajectory a map check follows: the optimised one, else the odometry's.
 inline const PoseTrajectory& finalTrajectory(const Analysis& a) { return a.optimized.empty() ? a.odometry : a.optimized; }
-// The map check's report: kept for the changes layer, its events merged into the run's.
-void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report);
-void setMapChanges(Analysis& analysis, MapChangeReport report);
+// The map check's report: kept for the changes layer, its events merged into the run's; with the
+// log's labelled changes when it has them (logMapChangeLabels).
+void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report,
+                   std::optional<std::vector<MapChangeLabel>> labels);
+void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels);
 // Run B's part of an analysis: its final trajectory with errors and its diagnostics.
 Comparison comparisonOf(const Session& session, std::string name);
 // Sets the trajectory file's name, its poses (city_T_ego at the sweeps) and their errors against `truth`.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "engine/error.h"
+#include "engine/eval/change_scoring.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/map/hd_map.h"
@@ -116,7 +117,8 @@ std::string mapCheckReport(const render::Analysis& a) {
                 "crossings: %zu contradicted, %zu consistent, %zu missing\n",
                 contradicted, consistent, a.changes->missing.size(), a.changes->observedBoundaryKm, crossingsContradicted,
                 crossingsConsistent, a.changes->missingCrossings.size());
-  return line;
+  if (!a.changeLabels) return line;
+  return line + ("against map_change.json: " + changeScoreLine(scoreMapCheck(*a.changes, *a.changeLabels)) + "\n");
 }
 
 }  // namespace
@@ -213,7 +215,7 @@ void TuningBench::refresh() {
   analysis_.landscape = std::move(previous.landscape);
   analysis_.comparison = std::move(previous.comparison);
   analysis_.measure = previous.measure;
-  if (previous.changes) render::setMapChanges(analysis_, previous.changes);
+  if (previous.changes) render::setMapChanges(analysis_, previous.changes, std::move(previous.changeLabels));
   summary_.reset();
   if (session->done()) {
     try {
@@ -303,7 +305,7 @@ bool TuningBench::checkMap() {
 void TuningBench::pollMapCheck() {
   if (!mapCheckJob_.valid() || mapCheckJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
-    render::setMapChanges(analysis_, mapCheckJob_.get());
+    render::setMapChanges(analysis_, mapCheckJob_.get(), logMapChangeLabels(log_.dir()));
   } catch (const Error& e) {
     message = e.what();
   }

@@ -1,6 +1,7 @@
 #include "engine/eval/change_scoring.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <string>
@@ -61,8 +62,7 @@ std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapE
 
 std::vector<Place> labelPlaces(const MapChangeLabel& l) {
   std::vector<Place> out;
-  const bool stretch = l.change == "narrowed" || l.change == "kerb_moved" || l.change == "lane_line_moved";
-  for (const Line& line : l.places) out.push_back({line, !stretch});
+  for (const Line& line : l.places) out.push_back({line, !l.openLine()});
   return out;
 }
 
@@ -91,11 +91,27 @@ nlohmann::json scoreJson(const ChangeScore& s) {
 
 }  // namespace
 
-std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings, const ChangeScore& laneLines) {
-  nlohmann::json j = scoreJson(drivableAreas);
-  j["pedestrian_crossing"] = scoreJson(crossings);
-  j["lane_boundary"] = scoreJson(laneLines);
+std::string changeScoreJson(const MapCheckScore& score) {
+  nlohmann::json j = scoreJson(score.drivableAreas);
+  j["pedestrian_crossing"] = scoreJson(score.crossings);
+  j["lane_boundary"] = scoreJson(score.laneLines);
   return j.dump(2) + "\n";
+}
+
+std::string changeScoreLine(const MapCheckScore& score) {
+  std::string line;
+  for (const auto& [name, s] : {std::pair{"drivable areas", &score.drivableAreas}, {"crossings", &score.crossings}, {"lane lines", &score.laneLines}}) {
+    char b[160];
+    std::snprintf(b, sizeof b, "%s%s %zu of %zu reports near a change, %zu of %zu changes found", line.empty() ? "" : "; ", name,
+                  s->reportsNearChange, s->reports, s->changesFound, s->changes);
+    line += b;
+  }
+  return line;
+}
+
+MapCheckScore scoreMapCheck(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels) {
+  return {scoreMapChanges(report, labels, MapElement::DrivableArea), scoreMapChanges(report, labels, MapElement::PedestrianCrossing),
+          scoreMapChanges(report, labels, MapElement::LaneBoundary)};
 }
 
 ChangeScore& ChangeScore::operator+=(const ChangeScore& o) {

@@ -8,12 +8,23 @@
 
 namespace hdprior {
 
+enum class MapElement { DrivableArea, PedestrianCrossing, LaneBoundary };
+
+// A map check scored per element.
+struct MapCheckScore {
+  ChangeScore drivableAreas, crossings, laneLines;
+};
+
 // {"reports", "reports_near_change", "precision", "changes", "changes_found", "recall", "driven_km",
 // "false_alarms_per_km"} of the drivable areas, and the same of the crossings in
 // "pedestrian_crossing" and of the lane lines in "lane_boundary" (null where undefined).
-std::string changeScoreJson(const ChangeScore& drivableAreas, const ChangeScore& crossings, const ChangeScore& laneLines);
+std::string changeScoreJson(const MapCheckScore& score);
 
-enum class MapElement { DrivableArea, PedestrianCrossing, LaneBoundary };
+// One line: per element, the reports near a labelled change and the changes found.
+std::string changeScoreLine(const MapCheckScore& score);
+
+// Every element's reports scored against the labels (scoreMapChanges' defaults).
+MapCheckScore scoreMapCheck(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels);
 
 // The reports of one element scored against the labelled changes of that element.
 ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels,

@@ -59,4 +59,10 @@ std::vector<MapChangeLabel> readMapChangeLabels(const std::filesystem::path& fil
   return parseMapChangeLabels(readFileText(file), file.string());
 }
 
+std::optional<std::vector<MapChangeLabel>> logMapChangeLabels(const std::filesystem::path& logDir) {
+  const std::filesystem::path file = logDir / "map_change.json";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  return readMapChangeLabels(file);
+}
+
 }  // namespace hdprior

@@ -71,6 +71,10 @@ void ChangesLayer::build(const Scene& scene) {
     }
     if (show_ >= 1) cells = surfaceCells(scene, report.evidence, road_, notRoad_);
   }
+  if (analysis_ && analysis_->changeLabels && labels_)
+    for (const MapChangeLabel& l : *analysis_->changeLabels)
+      for (const std::vector<Eigen::Vector2d>& place : l.places)
+        strokes.polyline(onGround(scene, place, !l.openLine()), 0.25f, labelled_);
   strokes_.upload(strokes, {});
   surface_ = std::make_unique<GpuMesh>();
   surface_->upload(std::span<const ColoredVertex>(cells));
@@ -89,13 +93,16 @@ std::vector<MarkerKey> ChangesLayer::markerKeys() const {
     keys.push_back({"lidar: beside the road", notRoad_});
   }
   if (show_ == 2) keys.push_back({"unobserved", unobserved_});
+  if (analysis_->changeLabels && labels_) keys.push_back({"labelled change (map_change.json)", labelled_});
   return keys;
 }
 
 std::vector<LayerOption> ChangesLayer::options() {
   std::vector<LayerOption> o = {
       LayerOption::choice("show", &show_, {"verdicts", "verdicts and lidar surface", "everything"}, true)};
-  for (auto [label, color] : {std::pair{"contradicted", &contradicted_}, {"consistent", &consistent_}, {"missing", &missing_}}) {
+  o.push_back(LayerOption::choice("labelled changes", &labels_, {"hidden", "shown"}, true));
+  for (auto [label, color] : {std::pair{"contradicted", &contradicted_}, {"consistent", &consistent_}, {"missing", &missing_},
+                              {"labelled change", &labelled_}}) {
     o.push_back(LayerOption::colorPicker(label, color));
     o.back().rebuilds = true;
   }

@@ -8,8 +8,9 @@
 namespace hdprior::render {
 
 // The map check (Analysis::changes): each drivable area's boundary stretches coloured by verdict
-// (contradicted thick, consistent thin, unobserved faint), the missing surfaces' outlines, and
-// optionally what the lidar saw as road and beside the road under them.
+// (contradicted thick, consistent thin, unobserved faint), the missing surfaces' outlines, the
+// crossings and lane lines by verdict, optionally what the lidar saw as road and beside the road
+// under them, and a simulated log's labelled changes (where its map really differs) thin in cyan.
 class ChangesLayer : public Layer {
  public:
   static constexpr const char* kName = "changes";
@@ -26,8 +27,9 @@ class ChangesLayer : public Layer {
   StrokeMeshes strokes_;
   std::unique_ptr<GpuMesh> surface_;
   int show_ = 1;  // 0: verdicts, 1: verdicts and the lidar's surface, 2: also the unobserved stretches
+  int labels_ = 1;  // a simulated log's labelled changes: 0 hidden, 1 shown
   Eigen::Vector4f contradicted_{1.0f, 0.15f, 0.15f, 1.0f}, consistent_{0.25f, 0.95f, 0.35f, 1.0f},
-      unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, missing_{1.0f, 0.2f, 1.0f, 1.0f};
+      unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, missing_{1.0f, 0.2f, 1.0f, 1.0f}, labelled_{0.1f, 0.95f, 0.95f, 1.0f};
   Eigen::Vector4f road_{0.3f, 0.5f, 0.95f, 0.4f}, notRoad_{0.2f, 0.55f, 0.25f, 0.45f};
 };
 

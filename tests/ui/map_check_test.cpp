@@ -1,5 +1,6 @@
 // The bench's map check under Xvfb: after a run, `check-map` draws the changes layer (the street
-// drawn too narrow in red), lists a map-change event at the frame that saw it, and `report` counts it;
+// drawn too narrow in red, its label in cyan), lists a map-change event at the frame that saw it,
+// and `report` counts and scores it;
 // the same for a crossing drawn where none is painted and a painted one the map lacks.
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 #include <string>
 
 #include "display_run.h"
+#include "map_change_labels_file.h"
 #include "moved_crossing.h"
 #include "narrowed_street.h"
 #include "render/image_compare.h"
@@ -20,19 +22,26 @@ namespace fs = std::filesystem;
 // The 3-D view between the panels (layers left, bench right), above the plots.
 constexpr int kLeft = 320, kRight = 1280 - 370, kBottom = 800 - 62 - 26 - 170 - 8;
 
-size_t contradictedPixels(const render::Image& image) {
+template <class Colour>
+size_t pixelsOf(const render::Image& image, Colour colour) {
   size_t n = 0;
   for (int y = 0; y < kBottom; ++y)
-    for (int x = kLeft; x < kRight; ++x) {
-      const uint8_t* p = image.pixel(x, y);
-      n += p[0] > 220 && p[1] < 80 && p[2] < 80;  // the layer's contradicted red (255, 38, 38)
-    }
+    for (int x = kLeft; x < kRight; ++x) n += colour(image.pixel(x, y));
   return n;
+}
+
+size_t contradictedPixels(const render::Image& image) {
+  return pixelsOf(image, [](const uint8_t* p) { return p[0] > 220 && p[1] < 80 && p[2] < 80; });  // (255, 38, 38)
+}
+
+size_t labelledPixels(const render::Image& image) {
+  return pixelsOf(image, [](const uint8_t* p) { return p[0] < 70 && p[1] > 200 && p[2] > 200; });  // cyan (26, 242, 242)
 }
 
 TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   const SimulatedDrive drive = simulatedTownDrive("map_check", 1, 7, 8.0);
   const int64_t narrowed = narrowStreetAtStart(drive.log, 2.5);
+  writeMapChangeLabels(drive.log, {changedAreaLabel(drive.log, narrowed)});
   const fs::path dir = drive.folder;
   const fs::path before = dir / "before.png", after = dir / "after.png";
   writeText(dir / "script.txt", "run\nview top\nlayer sweep off\nlayer changes on\nwait 2\nscreenshot " + before.string() +
@@ -42,6 +51,10 @@ TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   EXPECT_NE(r.out.find("map check: 1 drivable areas contradicted"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("map-change drivable area " + std::to_string(narrowed) + ": kerb"), std::string::npos) << r.out;
   EXPECT_GT(contradictedPixels(readPng(after)), contradictedPixels(readPng(before)) + 200) << after;
+  // The log's labelled change is drawn with the check and scored in the report.
+  EXPECT_GT(labelledPixels(readPng(after)), labelledPixels(readPng(before)) + 200) << after;
+  EXPECT_NE(r.out.find("against map_change.json: drivable areas 1 of 1 reports near a change, 1 of 1 changes found"), std::string::npos)
+      << r.out;
 }
 
 TEST(MapCheck, CrossingsTheLidarContradictsAreCountedAndListedAsEvents) {

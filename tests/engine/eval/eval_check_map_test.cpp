@@ -11,6 +11,7 @@
 #include "engine/io/argoverse_log.h"
 #include "engine/io/file_bytes.h"
 #include "engine/io/vector_map.h"
+#include "map_change_labels_file.h"
 #include "moved_lane_line.h"
 #include "narrowed_street.h"
 #include "test_data.h"
@@ -19,36 +20,13 @@ namespace hdprior {
 namespace {
 namespace fs = std::filesystem;
 
-nlohmann::json points(const Ring2& line) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const Eigen::Vector2d& p : line) out.push_back({p.x(), p.y()});
-  return out;
-}
-
-// Labels the log's narrowed drivable area and its moved lane line as changed: where they lie in
-// the written map.
-void labelChanges(const fs::path& log, int64_t id, const Ring2& movedLine) {
-  const VectorMap map = readVectorMap(ArgoverseLog(log).mapFiles().vectorMap);
-  nlohmann::json outline = nlohmann::json::array();
-  for (const DrivableArea& a : map.drivableAreas)
-    if (a.id == id)
-      for (const Eigen::Vector3d& v : a.areaBoundary) outline.push_back({v.x(), v.y()});
-  const nlohmann::json labels = {
-      {"fraction", 0.3},
-      {"within_m", nullptr},
-      {"changes",
-       {{{"element", "drivable_area"}, {"id", id}, {"change", "shifted"}, {"route_distance_m", 0.0}, {"map_outline", outline}},
-        {{"element", "lane_boundary"}, {"id", 1}, {"change", "lane_line_moved"}, {"route_distance_m", 0.0},
-         {"changed_stretch", points(movedLine)}, {"offset_m", 1.2}}}}};
-  writeFileAtomically(log / "map_change.json", labels.dump());
-}
-
 TEST(EvalCheckMap, ScoresTheLabelledLogAndCountsFalseAlarmsOnTheOther) {
   const fs::path dir = test::freshOutputDir("eval_check_map");
   const fs::path changed = test::copySharedTownDrive(1, 7, 8.0, dir / "logs" / "changed");
   const fs::path current = test::copySharedTownDrive(2, 1, 6.0, dir / "logs" / "current");
   const int64_t narrowed = test::narrowStreetAtStart(changed, 2.5);
-  labelChanges(changed, narrowed, test::moveALaneLine(changed, 1.2));
+  const Ring2 moved = test::moveALaneLine(changed, 1.2);
+  test::writeMapChangeLabels(changed, {test::changedAreaLabel(changed, narrowed), test::movedLaneLineLabel(moved, 1.2)});
   const fs::path out = dir / "out";
   const test::CommandResult r = test::runHdprior("eval " + test::quoted(dir / "logs") + " --out " + test::quoted(out) + " -j 2 --check-map");
   ASSERT_EQ(r.status, 0) << r.err;
