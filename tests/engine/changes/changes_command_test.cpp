@@ -172,6 +172,9 @@ TEST(ChangesCommandReal, TheRealSweepAgreesWithItsMap) {
   EXPECT_EQ(s["pedestrian_crossings"]["consistent"].get<int>(), 1) << s.dump();
   EXPECT_EQ(s["pedestrian_crossings"]["contradicted"].get<int>(), 0) << s.dump();
   EXPECT_EQ(s["missing_crossings"].get<int>(), 0) << s.dump();
+  // Its lane paint within 8 m lies on the map's lines.
+  EXPECT_GE(s["lane_line_stretches"]["consistent"].get<int>(), 2) << s.dump();
+  EXPECT_EQ(s["lane_line_stretches"]["contradicted"].get<int>(), 0) << s.dump();
 }
 
 }  // namespace
