@@ -41,7 +41,7 @@ render::Analysis runAnalysis(const ArgoverseLog& log, const HdMap& map, const Co
   if (keyframe) render::inspect(analysis, session, map, *keyframe);
   if (checkMap)
     render::setMapChanges(analysis, detectMapChanges(log, map, render::finalTrajectory(analysis), config.roadPoints, ChangeOptions{}),
-                          logMapChangeLabels(log.dir()));
+                          logMapChangeLabels(log.dir()), log.sweepTimestamps());
   return analysis;
 }
 

@@ -6,6 +6,7 @@
 
 #include "engine/changes/change_events.h"
 #include "engine/changes/map_change_report.h"
+#include "engine/eval/missed_change_events.h"
 #include "engine/error.h"
 #include "engine/pipeline/session.h"
 
@@ -36,17 +37,22 @@ std::vector<double> perSweep(std::vector<double> errors, const std::vector<Skipp
 }  // namespace
 
 void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report,
-                   std::optional<std::vector<MapChangeLabel>> labels) {
+                   std::optional<std::vector<MapChangeLabel>> labels, const std::vector<int64_t>& sweepTimestamps) {
   std::vector<RunEvent> run;
   for (const RunEvent& e : analysis.events)
-    if (e.kind != RunEvent::Kind::MapChange) run.push_back(e);
-  analysis.events = mergedEvents(run, mapChangeEvents(*report));
+    if (!isMapCheckEvent(e.kind)) run.push_back(e);
+  std::vector<RunEvent> check = mapChangeEvents(*report);
+  if (labels) {
+    check = mergedEvents(check, missedChangeEvents(*report, *labels, finalTrajectory(analysis), sweepTimestamps));
+  }
+  analysis.events = mergedEvents(run, check);
   analysis.changes = std::move(report);
   analysis.changeLabels = std::move(labels);
 }
 
-void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels) {
-  setMapChanges(analysis, std::make_shared<const MapChangeReport>(std::move(report)), std::move(labels));
+void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels,
+                   const std::vector<int64_t>& sweepTimestamps) {
+  setMapChanges(analysis, std::make_shared<const MapChangeReport>(std::move(report)), std::move(labels), sweepTimestamps);
 }
 
 Analysis analysisOf(const Session& session) {

@@ -69,10 +69,12 @@ Analysis analysisOf(const Session& session);
 // The trajectory a map check follows: the optimised one, else the odometry's.
 inline const PoseTrajectory& finalTrajectory(const Analysis& a) { return a.optimized.empty() ? a.odometry : a.optimized; }
 // The map check's report: kept for the changes layer, its events merged into the run's; with the
-// log's labelled changes when it has them (logMapChangeLabels).
+// log's labelled changes when it has them (logMapChangeLabels), and the ones the check missed as
+// events at the sweep (of sweepTimestamps, along the final trajectory) nearest to each.
 void setMapChanges(Analysis& analysis, std::shared_ptr<const MapChangeReport> report,
-                   std::optional<std::vector<MapChangeLabel>> labels);
-void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels);
+                   std::optional<std::vector<MapChangeLabel>> labels, const std::vector<int64_t>& sweepTimestamps);
+void setMapChanges(Analysis& analysis, MapChangeReport report, std::optional<std::vector<MapChangeLabel>> labels,
+                   const std::vector<int64_t>& sweepTimestamps);
 // Run B's part of an analysis: its final trajectory with errors and its diagnostics.
 Comparison comparisonOf(const Session& session, std::string name);
 // Sets the trajectory file's name, its poses (city_T_ego at the sweeps) and their errors against `truth`.

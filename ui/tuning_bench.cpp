@@ -215,7 +215,7 @@ void TuningBench::refresh() {
   analysis_.landscape = std::move(previous.landscape);
   analysis_.comparison = std::move(previous.comparison);
   analysis_.measure = previous.measure;
-  if (previous.changes) render::setMapChanges(analysis_, previous.changes, std::move(previous.changeLabels));
+  if (previous.changes) render::setMapChanges(analysis_, previous.changes, std::move(previous.changeLabels), log_.sweepTimestamps());
   summary_.reset();
   if (session->done()) {
     try {
@@ -305,7 +305,7 @@ bool TuningBench::checkMap() {
 void TuningBench::pollMapCheck() {
   if (!mapCheckJob_.valid() || mapCheckJob_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   try {
-    render::setMapChanges(analysis_, mapCheckJob_.get(), logMapChangeLabels(log_.dir()));
+    render::setMapChanges(analysis_, mapCheckJob_.get(), logMapChangeLabels(log_.dir()), log_.sweepTimestamps());
   } catch (const Error& e) {
     message = e.what();
   }

@@ -121,6 +121,28 @@ ChangeScore& ChangeScore::operator+=(const ChangeScore& o) {
   return *this;
 }
 
+namespace {
+
+MapElement elementOf(const MapChangeLabel& l) {
+  return l.element == "drivable_area" ? MapElement::DrivableArea
+         : l.element == "pedestrian_crossing" ? MapElement::PedestrianCrossing
+                                              : MapElement::LaneBoundary;
+}
+
+}  // namespace
+
+std::vector<size_t> missedChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, double nearRoute,
+                                  double match) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (labels[i].routeDistance > nearRoute) continue;
+    const std::vector<Place> changed = labelPlaces(labels[i]);
+    const std::vector<std::vector<Place>> reports = reportPlaces(report, elementOf(labels[i]));
+    if (std::none_of(reports.begin(), reports.end(), [&](const auto& r) { return near(r, changed, match); })) out.push_back(i);
+  }
+  return out;
+}
+
 ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, MapElement element,
                             double nearRoute, double match) {
   ChangeScore score;
@@ -128,10 +150,7 @@ ChangeScore scoreMapChanges(const MapChangeReport& report, const std::vector<Map
   std::vector<std::vector<Place>> changed;
   std::vector<bool> passed;
   for (const MapChangeLabel& l : labels) {
-    if (l.element != (element == MapElement::DrivableArea         ? "drivable_area"
-                      : element == MapElement::PedestrianCrossing ? "pedestrian_crossing"
-                                                                  : "lane_boundary"))
-      continue;
+    if (elementOf(l) != element) continue;
     changed.push_back(labelPlaces(l));
     passed.push_back(l.routeDistance <= nearRoute);
   }

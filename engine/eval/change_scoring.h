@@ -23,6 +23,10 @@ std::string changeScoreJson(const MapCheckScore& score);
 // One line: per element, the reports near a labelled change and the changes found.
 std::string changeScoreLine(const MapCheckScore& score);
 
+// The labels (indices) that count for recall and that no report of their element lies near.
+std::vector<size_t> missedChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels,
+                                  double nearRoute = 15.0, double match = 5.0);
+
 // Every element's reports scored against the labels (scoreMapChanges' defaults).
 MapCheckScore scoreMapCheck(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels);
 

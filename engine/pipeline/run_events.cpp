@@ -45,6 +45,7 @@ const char* toString(RunEvent::Kind kind) {
     case RunEvent::Kind::Beyond3Sigma: return "beyond-3-sigma";
     case RunEvent::Kind::SkippedSweep: return "skipped-sweep";
     case RunEvent::Kind::MapChange: return "map-change";
+    case RunEvent::Kind::MissedChange: return "missed-change";
   }
   return "?";
 }

@@ -11,19 +11,24 @@ struct SkippedSweep;
 
 // A place in a run worth looking at, for the bench to jump to.
 struct RunEvent {
-  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep, MapChange };
+  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep, MapChange, MissedChange };
   Kind kind = Kind::Rejected;
   // frame: the log's sweep index; a skipped sweep's keyframe is the one before it; a map change's
-  // frame is the sweep that saw it best, its keyframe 0 (it belongs to no keyframe)
+  // frame is the sweep that saw it best (a missed labelled change's: the sweep nearest to it), its
+  // keyframe 0 (it belongs to no keyframe)
   size_t keyframe = 0, frame = 0;
   std::string detail;              // the reason, "lateral + yaw -> full", "lateral 0.52 m > 3 x 0.12 m", the problem
 };
 
 // Whether the event is a place in the log (the bench goes to its frame) rather than a keyframe's
 // match (the bench inspects the keyframe).
-inline bool isFrameEvent(RunEvent::Kind kind) { return kind == RunEvent::Kind::SkippedSweep || kind == RunEvent::Kind::MapChange; }
+inline bool isFrameEvent(RunEvent::Kind kind) {
+  return kind == RunEvent::Kind::SkippedSweep || kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange;
+}
+// Whether the event comes from a map check (and goes when the check is run again).
+inline bool isMapCheckEvent(RunEvent::Kind kind) { return kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange; }
 
-// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep", "map-change".
+// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep", "map-change", "missed-change".
 const char* toString(RunEvent::Kind kind);
 
 // A run's events in frame order: rejected and gated priors, a change in what consecutive priors fix,

@@ -1,6 +1,6 @@
 // The bench's map check under Xvfb: after a run, `check-map` draws the changes layer (the street
 // drawn too narrow in red, its label in cyan), lists a map-change event at the frame that saw it,
-// and `report` counts and scores it;
+// and `report` counts and scores it (a labelled change it cannot see is a missed-change event);
 // the same for a crossing drawn where none is painted and a painted one the map lacks.
 #include <gtest/gtest.h>
 
@@ -41,7 +41,11 @@ size_t labelledPixels(const render::Image& image) {
 TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   const SimulatedDrive drive = simulatedTownDrive("map_check", 1, 7, 8.0);
   const int64_t narrowed = narrowStreetAtStart(drive.log, 2.5);
-  writeMapChangeLabels(drive.log, {changedAreaLabel(drive.log, narrowed)});
+  // And a change the check cannot see (labelled near the drive, drawn far from it): a missed-change event.
+  const Eigen::Vector2d end = ArgoverseLog(drive.log).cityTEgoAtSweeps().poses().back().translation().head<2>();
+  const nlohmann::json unseen = {{"element", "drivable_area"}, {"id", 99}, {"change", "kerb_moved"}, {"route_distance_m", 3.0},
+                                 {"changed_stretch", pointsJson({end + Eigen::Vector2d(200, 200), end + Eigen::Vector2d(210, 200)})}};
+  writeMapChangeLabels(drive.log, {changedAreaLabel(drive.log, narrowed), unseen});
   const fs::path dir = drive.folder;
   const fs::path before = dir / "before.png", after = dir / "after.png";
   writeText(dir / "script.txt", "run\nview top\nlayer sweep off\nlayer changes on\nwait 2\nscreenshot " + before.string() +
@@ -53,8 +57,9 @@ TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   EXPECT_GT(contradictedPixels(readPng(after)), contradictedPixels(readPng(before)) + 200) << after;
   // The log's labelled change is drawn with the check and scored in the report.
   EXPECT_GT(labelledPixels(readPng(after)), labelledPixels(readPng(before)) + 200) << after;
-  EXPECT_NE(r.out.find("against map_change.json: drivable areas 1 of 1 reports near a change, 1 of 1 changes found"), std::string::npos)
+  EXPECT_NE(r.out.find("against map_change.json: drivable areas 1 of 1 reports near a change, 1 of 2 changes found"), std::string::npos)
       << r.out;
+  EXPECT_NE(r.out.find("missed-change kerb_moved drivable_area 99, 3.0 m from the drive, not reported"), std::string::npos) << r.out;
 }
 
 TEST(MapCheck, CrossingsTheLidarContradictsAreCountedAndListedAsEvents) {
