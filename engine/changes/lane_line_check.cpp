@@ -94,16 +94,20 @@ void LaneLineEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
   const Vec2 t = cityTEgo.translation().head<2>();
   std::vector<std::pair<size_t, double>> beside;  // each run's nearest stretch and its offset to it
   int on = 0, off = 0;
+  std::set<std::pair<int64_t, std::string>> offLines;  // the lines with paint beside them
   for (const PaintRun& run : paint.runs) {
     if (run.centre.norm() > options_.laneRange) continue;
     const std::optional<std::pair<size_t, double>> b = nearestStretch(r * run.centre + t);
     if (!b) continue;
     beside.push_back(*b);
     on += std::abs(b->second) < kOnLine;
-    off += std::abs(b->second) >= kMinOffset;
+    if (std::abs(b->second) >= kMinOffset) {
+      ++off;
+      offLines.insert({stretches_[b->first].judged.laneId, stretches_[b->first].judged.side});
+    }
   }
-  // A map change moves a line or two; a pose that is off moves the paint of every line in view.
-  if (off >= 3 && off > on) {
+  // A map change moves one line; a pose that is off moves the paint of every line in view.
+  if (off >= 3 && off > on && (offLines.size() >= 2 || on == 0)) {
     ++misalignedFrames_;
     return;
   }

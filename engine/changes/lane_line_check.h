@@ -37,7 +37,9 @@ struct LaneLineStretch {
 // one with none on it and options.laneOffsetRuns or more within half a metre of one place 0.75-1.5 m
 // beside it is contradicted (the paint is where the line is not); the rest are unobserved. Runs
 // in or beside a crossing are the crossing's. Worn or dashed paint never contradicts a line alone,
-// and a sweep whose runs lie beside the lines more than on them is left out: its pose is off.
+// and a sweep whose runs lie beside the lines more than on them is left out as off its pose, when
+// they lie beside two lines or more, or no run is on a line (a restriping moves one line; a pose
+// error moves every line in view).
 class LaneLineEvidence {
  public:
   LaneLineEvidence(const VectorMap& map, const ChangeOptions& options);

@@ -62,6 +62,7 @@ TEST(LaneLineCheck, ASharedLineIsOneLineCutIntoStretchesAndUnpaintedOnesAreNotRe
 
 // The dashed line's paint 1.2 m to its left while the solid line's is on it: the map drew the
 // dashed line in the wrong place. All paint 1.2 m off: the pose is, and the sweep is left out.
+// So is a sweep that sees one line, all of it beside it.
 TEST(LaneLineCheck, PaintBesideOneLineAndNoneOnItContradictsIt) {
   LaneLineEvidence evidence(twoLanes(), ChangeOptions{});
   SweepPaint paint = runsAlong(1.2, 0.0, 6.5);  // every run within 8 m of the sensor
@@ -88,6 +89,17 @@ TEST(LaneLineCheck, PaintBesideOneLineAndNoneOnItContradictsIt) {
   shifted.add(0, both, at(0.0));
   EXPECT_TRUE(shifted.stretches().empty());
   EXPECT_EQ(shifted.misalignedFrames(), 1);
+
+  // One line's paint beside it, more runs than the other line shows on it: a restriping moves one
+  // line, a pose error every line in view, so the sweep counts. Alone in view, it cannot tell.
+  LaneLineEvidence restriped(twoLanes(), ChangeOptions{});
+  SweepPaint most = runsAlong(1.2, 0.0, 6.5);
+  const SweepPaint glimpse = runsAlong(-3.45, 0.0, 1.0);
+  most.runs.insert(most.runs.end(), glimpse.runs.begin(), glimpse.runs.end());
+  restriped.add(0, most, at(0.0));
+  EXPECT_EQ(restriped.misalignedFrames(), 0);
+  restriped.add(1, runsAlong(1.2, 0.0, 6.5), at(0.0));
+  EXPECT_EQ(restriped.misalignedFrames(), 1);
 }
 
 TEST(LaneLineCheck, PaintHalfAMetreOffOrBesideARunOnTheLineDoesNotContradictIt) {
