@@ -139,56 +139,63 @@ Ring2 plan(const Polyline3& line) {
   return out;
 }
 
-void changeLaneLines(const VectorMap& world, const MapChangeOptions& o, const Ring2& drive, uint64_t seed,
-                     ChangedMap& out) {
-  // Painted lines outside intersections, by key: the first lane and side that has each, and how many do.
-  std::map<LaneLineKey, std::pair<const LaneSegment*, bool>> first;
-  std::map<LaneLineKey, int> lanes;
+// A painted line outside intersections that two lanes share: its key, the world's polyline and
+// the first lane that has it.
+struct SharedLine {
+  LaneLineKey key;
+  const Polyline3* line = nullptr;
+  int64_t lane = 0;
+  std::vector<int64_t> lanes;  // the two lanes that share it
+};
+
+std::vector<SharedLine> sharedPaintedLines(const VectorMap& world) {
+  std::map<LaneLineKey, SharedLine> byKey;
   for (const LaneSegment& lane : world.laneSegments) {
     if (lane.isIntersection) continue;
     for (bool left : {true, false}) {
       const Polyline3& line = left ? lane.leftLaneBoundary : lane.rightLaneBoundary;
       if (line.size() < 2 || !isPaintedMark(left ? lane.leftLaneMarkType : lane.rightLaneMarkType)) continue;
-      const LaneLineKey key = laneLineKey(line);
-      first.try_emplace(key, &lane, left);
-      ++lanes[key];
+      SharedLine& s = byKey.try_emplace(laneLineKey(line), SharedLine{laneLineKey(line), &line, lane.id, {}}).first->second;
+      s.lanes.push_back(lane.id);
     }
   }
-  std::vector<LaneLineKey> eligible;
-  for (const auto& [key, owner] : first) {
-    const Polyline3& line = owner.second ? owner.first->leftLaneBoundary : owner.first->rightLaneBoundary;
-    if (lanes[key] == 2 && (!o.withinM || polylineDistance(drive, plan(line), false) <= *o.withinM)) eligible.push_back(key);
-  }
+  std::vector<SharedLine> out;
+  for (auto& [key, s] : byKey)
+    if (s.lanes.size() == 2) out.push_back(std::move(s));
+  return out;
+}
+
+// Draws the line `offset` metres to its left in every lane of `map` that has it.
+MapChange moveLaneLine(const SharedLine& s, double offset, VectorMap& map) {
+  const Polyline3 moved = movedLine(*s.line, offset), reversed(moved.rbegin(), moved.rend());
+  for (LaneSegment& l : map.laneSegments)
+    for (Polyline3* b : {&l.leftLaneBoundary, &l.rightLaneBoundary})
+      if (b->size() >= 2 && laneLineKey(*b) == s.key) *b = (*b == *s.line) ? moved : reversed;
+  MapChange change;
+  change.kind = Kind::LaneLineMoved;
+  change.id = s.lane;
+  change.changedStretch = plan(moved);
+  change.worldStretch = plan(*s.line);
+  change.offsetM = offset;
+  return change;
+}
+
+void changeLaneLines(const VectorMap& world, const MapChangeOptions& o, const Ring2& drive, uint64_t seed,
+                     ChangedMap& out) {
+  std::vector<SharedLine> eligible = sharedPaintedLines(world);
+  std::erase_if(eligible, [&](const SharedLine& s) { return o.withinM && polylineDistance(drive, plan(*s.line), false) > *o.withinM; });
   std::mt19937_64 rng(seed ^ 0x51e4b0d7ULL);
   std::shuffle(eligible.begin(), eligible.end(), rng);
   size_t count = changeCount(o.fraction, eligible.size());
   std::set<int64_t> narrowed;  // lanes with a line moved: their other line stays, or the lane would vanish
-  for (const LaneLineKey& key : eligible) {
+  for (const SharedLine& s : eligible) {
     if (count == 0) break;
-    const auto [lane, left] = first.at(key);
-    const Polyline3& line = left ? lane->leftLaneBoundary : lane->rightLaneBoundary;
-    std::vector<int64_t> sharing;
-    for (const LaneSegment& l : world.laneSegments)
-      if ((l.leftLaneBoundary.size() >= 2 && laneLineKey(l.leftLaneBoundary) == key) ||
-          (l.rightLaneBoundary.size() >= 2 && laneLineKey(l.rightLaneBoundary) == key))
-        sharing.push_back(l.id);
-    if (std::any_of(sharing.begin(), sharing.end(), [&](int64_t id) { return narrowed.count(id) > 0; })) continue;
-    narrowed.insert(sharing.begin(), sharing.end());
+    if (std::any_of(s.lanes.begin(), s.lanes.end(), [&](int64_t id) { return narrowed.count(id) > 0; })) continue;
+    narrowed.insert(s.lanes.begin(), s.lanes.end());
     --count;
     const double offset = (std::uniform_int_distribution<int>(0, 1)(rng) ? 1.0 : -1.0) *
                           std::uniform_real_distribution<double>(0.5, 1.5)(rng);
-    const Polyline3 moved = movedLine(line, offset);
-    Polyline3 reversed(moved.rbegin(), moved.rend());
-    for (LaneSegment& l : out.map.laneSegments)
-      for (Polyline3* b : {&l.leftLaneBoundary, &l.rightLaneBoundary})
-        if (b->size() >= 2 && laneLineKey(*b) == key) *b = (*b == line) ? moved : reversed;
-    MapChange change;
-    change.kind = Kind::LaneLineMoved;
-    change.id = lane->id;
-    change.changedStretch = plan(moved);
-    change.worldStretch = plan(line);
-    change.offsetM = offset;
-    out.changes.push_back(std::move(change));
+    out.changes.push_back(moveLaneLine(s, offset, out.map));
   }
 }
 
