@@ -133,11 +133,14 @@ MapElement elementOf(const MapChangeLabel& l) {
 
 std::vector<size_t> missedChanges(const MapChangeReport& report, const std::vector<MapChangeLabel>& labels, double nearRoute,
                                   double match) {
+  std::map<MapElement, std::vector<std::vector<Place>>> byElement;
+  for (MapElement e : {MapElement::DrivableArea, MapElement::PedestrianCrossing, MapElement::LaneBoundary})
+    byElement[e] = reportPlaces(report, e);
   std::vector<size_t> out;
   for (size_t i = 0; i < labels.size(); ++i) {
     if (labels[i].routeDistance > nearRoute) continue;
     const std::vector<Place> changed = labelPlaces(labels[i]);
-    const std::vector<std::vector<Place>> reports = reportPlaces(report, elementOf(labels[i]));
+    const std::vector<std::vector<Place>>& reports = byElement.at(elementOf(labels[i]));
     if (std::none_of(reports.begin(), reports.end(), [&](const auto& r) { return near(r, changed, match); })) out.push_back(i);
   }
   return out;
