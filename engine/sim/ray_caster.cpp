@@ -239,8 +239,11 @@ std::optional<RayHit> castRayGround(const Scene& scene, const Eigen::Vector3d& o
               : hitBoundary < sidewalk ? PointLabel::SidewalkCurb
                                        : PointLabel::OtherGround;
   hit.reflectivity = scene.reflectivity(hit.label);
-  if (hit.label == PointLabel::Road)
-    if (const uint8_t paint = scene.paint().reflectivityAt((origin + b * dir).head<2>())) hit.reflectivity = paint;
+  if (hit.label == PointLabel::Road) {
+    const Eigen::Vector2d at = (origin + b * dir).head<2>();
+    const uint8_t paint = scene.paint().reflectivityAt(at);
+    hit.reflectivity = paint ? paint : scene.roadReflectivityAt(at);
+  }
   hit.cosIncidence = curbFace ? horiz : std::abs(dir.z());
   return hit;
 }

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "engine/io/vector_map.h"
+#include "engine/sim/splitmix.h"
 
 namespace hdprior {
 namespace {
@@ -123,7 +124,8 @@ uint8_t RoadPaint::reflectivityAt(const Vec2& p) const {
   if (marks_.empty() || !grid_.cellOf(p, col, row)) return 0;
   const size_t i = grid_.index(col, row);
   for (uint32_t k = cellStart_[i]; k < cellStart_[i + 1]; ++k)
-    if (covers(marks_[items_[k]], p)) return marks_[items_[k]].reflectivity;
+    if (covers(marks_[items_[k]], p))
+      return options_.wear > 0.0 && cellValue(p.x(), p.y(), 0.25, options_.wearSeed) < options_.wear ? 0 : marks_[items_[k]].reflectivity;
   return 0;
 }
 

@@ -16,6 +16,8 @@ struct PaintOptions {
   double dashLength = 3.0, dashGap = 9.0;         // dashed lane lines
   double stripeWidth = 0.5, stripeGap = 0.5;      // zebra crossings
   uint8_t white = 60, yellow = 45;                // reflectivity (asphalt 8-18)
+  double wear = 0.0;                              // share of 0.25 m cells worn away (asphalt shows)
+  uint64_t wearSeed = 0;
   double cellSize = 2.0;                          // of the lookup grid, metres
 };
 

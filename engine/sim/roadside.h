@@ -30,6 +30,13 @@ struct RoadsideOptions {
   double sidewalkSlope = 0.0;       // cross slope, rising away from the road
   double terrainRelief = 0.0;       // amplitude of the small bumps of the grass beyond the sidewalk
   uint8_t roadReflectivity = 12, sidewalkReflectivity = 30, terrainReflectivity = 22;
+  // The road's surface as the lidar's intensity sees it (0: clean asphalt and bright paint): paint
+  // `paintContrast` times the road's reflectivity (yellow 0.8 of it) with a share `paintWear` of it
+  // worn away (in 0.25 m cells), and bright asphalt `asphaltPatchGain` times the road's: patches
+  // (sealed cracks, repairs, unmapped markings) on a share `asphaltPatchShare` of 0.25 m cells and
+  // flecks (the aggregate) on a share `asphaltFleckShare` of 2 cm cells.
+  double paintContrast = 0.0, paintWear = 0.0;
+  double asphaltPatchShare = 0.0, asphaltFleckShare = 0.0, asphaltPatchGain = 2.5;
   double mapErrorAmplitude = 0.0;   // the kerb lies up to this far from the map's boundary ...
   double mapErrorWavelength = 50.0; // ... in a field varying over this many metres
 };

@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+#include "engine/sim/splitmix.h"
+
 namespace hdprior {
 
 Scene::Scene(GridGeometry groundGrid, std::vector<float> groundHeights, BoundaryDistance curbDistance,
@@ -12,6 +14,7 @@ Scene::Scene(GridGeometry groundGrid, std::vector<float> groundHeights, Boundary
     : groundGrid_(groundGrid), heights_(std::move(groundHeights)), curb_(std::move(curbDistance)),
       sidewalkWidth_(sidewalkWidth) {
   std::mt19937_64 rng(seed);
+  textureSalt_ = splitmix(seed ^ 0xa5f417ULL);
   std::uniform_real_distribution<double> phase(0.0, 6.283185307179586);
   curbPhase_[0] = phase(rng);
   curbPhase_[1] = phase(rng);
@@ -91,6 +94,16 @@ uint8_t Scene::reflectivity(PointLabel label) const {
   return label == PointLabel::Road ? o.roadReflectivity
          : label == PointLabel::SidewalkCurb ? o.sidewalkReflectivity
                                              : o.terrainReflectivity;
+}
+
+uint8_t Scene::roadReflectivityAt(const Eigen::Vector2d& city) const {
+  const uint8_t road = reflectivity(PointLabel::Road);
+  if (!roadside_) return road;
+  const RoadsideOptions& o = roadside_->options();
+  const bool patch = o.asphaltPatchShare > 0.0 && cellValue(city.x(), city.y(), 0.25, textureSalt_) < o.asphaltPatchShare;
+  const bool fleck = o.asphaltFleckShare > 0.0 && cellValue(city.x(), city.y(), 0.02, ~textureSalt_) < o.asphaltFleckShare;
+  if (!patch && !fleck) return road;
+  return uint8_t(std::clamp(std::lround(road * o.asphaltPatchGain), 0L, 255L));
 }
 
 std::optional<Eigen::Vector2d> MovingCar::centreAt(int64_t tNs) const {

@@ -91,6 +91,8 @@ class Scene {
   double maxRise() const { return maxRise_; }
   // Of the road, the sidewalks and the ground beyond.
   uint8_t reflectivity(PointLabel label) const;
+  // The road's at a point: with the roadside's bright asphalt patches.
+  uint8_t roadReflectivityAt(const Eigen::Vector2d& city) const;
   const GridGeometry& groundGrid() const { return groundGrid_; }
 
   void addBox(const SceneBox& box) { boxes_.push_back(box); }
@@ -125,6 +127,7 @@ class Scene {
   std::optional<Roadside> roadside_;
   RoadPaint paint_;
   double curbPhase_[2] = {0.0, 0.0};
+  uint64_t textureSalt_ = 0;
   std::vector<SceneBox> boxes_;
   std::vector<Eigen::Vector2d> boxAxes_;
   std::vector<SceneCylinder> cylinders_;

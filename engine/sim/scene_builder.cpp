@@ -10,12 +10,25 @@
 #include "engine/error.h"
 #include "engine/map/boundary_distance.h"
 #include "engine/map/drivable_raster.h"
+#include "engine/sim/splitmix.h"
 #include "engine/sim/traffic_islands.h"
 
 namespace hdprior {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
+
+// Paint of a roadside's contrast and wear (without one: the default bright paint).
+PaintOptions paintOptions(const std::optional<RoadsideOptions>& roadside, uint64_t seed) {
+  PaintOptions paint;
+  if (!roadside || !(roadside->paintContrast > 0.0)) return paint;
+  const double white = std::clamp(roadside->roadReflectivity * roadside->paintContrast, 0.0, 255.0);
+  paint.white = uint8_t(std::lround(white));
+  paint.yellow = uint8_t(std::lround(0.8 * white));
+  paint.wear = roadside->paintWear;
+  paint.wearSeed = splitmix(seed ^ 0x3ea5ULL);
+  return paint;
+}
 
 struct Region {
   Vec2 lo, hi;
@@ -285,7 +298,7 @@ Scene buildScene(const VectorMap& world, const GroundHeight& ground, const LaneG
   if (options.roadside)
     scene.setRoadside(Roadside::build(*options.roadside, region.lo, region.hi, raster.boundaryPoints(), islands, seed));
 
-  scene.setPaint(RoadPaint(world, region.lo, region.hi));
+  scene.setPaint(RoadPaint(world, region.lo, region.hi, paintOptions(options.roadside, seed)));
 
   std::mt19937_64 rng(seed ^ 0x5ce4e5eedULL);
   Placer placer{scene, path, rng};

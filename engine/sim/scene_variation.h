@@ -53,7 +53,8 @@ struct SceneVariation {
 // 0.3-0.5 m wide and 2-5 cm deep; camber 1-3 % up to 2.5-5 m in; sidewalks 2-6 m wide varying
 // with a 1-4 % cross slope, verge relief 2-8 cm; map error 0-0.3 m over 20-80 m; parked cars
 // 0-90 %; buildings 0.1-0.8 swinging by 0-80 %; trees 0.1-0.5; bushes and hedges 0.1-0.6;
-// islands 0-0.5; towns' streets 6-9 .. 18-30 m wide, junction margin 4-10 m; lidar elevation
+// islands 0-0.5; paint 1.4-2x the road's reflectivity, 10-40 % worn, bright asphalt (2-3x) on
+// 3-7 % of the road in patches and 6-12 % in flecks; towns' streets 6-9 .. 18-30 m wide, junction margin 4-10 m; lidar elevation
 // errors up to 0-0.2 deg and range biases up to 0-3 cm per laser, the down lidar's mounting
 // 0-0.3 deg and 0-2 cm off its calibration.
 SceneVariation drawSceneVariation(SceneFamily family, uint64_t seed);

@@ -50,6 +50,23 @@ TEST(RoadPaint, LaneLinesFollowTheirMarkTypes) {
   EXPECT_EQ(RoadPaint(none, Vec2(-10, -10), Vec2(40, 10)).markCount(), 0u);
 }
 
+TEST(RoadPaint, WornPaintLeavesTheSameShareOfCellsBareInEverySweep) {
+  VectorMap map;
+  map.laneSegments.push_back(laneAlongX("SOLID_WHITE", "NONE"));
+  PaintOptions o;
+  o.wear = 0.3;
+  o.wearSeed = 7;
+  const RoadPaint paint(map, Vec2(-10, -10), Vec2(40, 10), o);
+  int painted = 0, bare = 0;
+  for (double x = 0.5; x < 29.5; x += 0.01) {
+    const uint8_t r = paint.reflectivityAt(Vec2(x, 2.0));
+    ASSERT_EQ(r, paint.reflectivityAt(Vec2(x, 2.0)));  // the same place the same every time
+    (r == o.white ? painted : bare) += 1;
+    ASSERT_TRUE(r == 0 || r == o.white);
+  }
+  EXPECT_NEAR(double(bare) / (painted + bare), 0.3, 0.1);
+}
+
 TEST(RoadPaint, CrossingsAreZebraStripesAcrossThem) {
   VectorMap map;
   PedestrianCrossing c;

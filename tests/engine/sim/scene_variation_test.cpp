@@ -45,6 +45,16 @@ TEST(SceneVariation, DrawIsDeterministicAndWithinRanges) {
       EXPECT_LE(r.sidewalkSlope, 0.04);
       EXPECT_GE(r.mapErrorAmplitude, 0.0);
       EXPECT_LE(r.mapErrorAmplitude, 0.3);
+      EXPECT_GE(r.paintContrast, 1.4);
+      EXPECT_LE(r.paintContrast, 2.0);
+      EXPECT_GE(r.paintWear, 0.1);
+      EXPECT_LE(r.paintWear, 0.4);
+      EXPECT_GE(r.asphaltPatchShare, 0.03);
+      EXPECT_LE(r.asphaltPatchShare, 0.07);
+      EXPECT_GE(r.asphaltFleckShare, 0.06);
+      EXPECT_LE(r.asphaltFleckShare, 0.12);
+      EXPECT_GE(r.asphaltPatchGain, 2.0);
+      EXPECT_LE(r.asphaltPatchGain, 3.0);
       EXPECT_GE(0.8 * r.mapErrorWavelength, 20.0);
       EXPECT_LE(1.25 * r.mapErrorWavelength, 80.0);
       EXPECT_GE(v.parked, 0.0);

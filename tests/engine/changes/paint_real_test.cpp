@@ -1,0 +1,30 @@
+// What the paint reading sees on the real sweeps: faint lane paint on bright-flecked asphalt. The
+// simulator's road surface is drawn around these figures (SimulatedPaint below, docs/simulator.md).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "paint_statistics.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace {
+
+TEST(PaintReal, LanePaintIsFaintAndAsphaltIsFleckedWithinEightMetres) {
+  const test::PaintStatistics s = test::paintStatistics(test::sharedLog(), 1, 2);
+  std::printf("real: %zu sweeps; on a painted line %.3f of %ld returns bright, asphalt %.3f of %ld; paint runs a sweep: "
+              "%.1f on lines, %.1f elsewhere\n",
+              s.sweeps, s.onLineBrightShare(), s.onLine, s.asphaltBrightShare(), s.asphalt, s.runsOnLinesPerSweep(),
+              s.runsElsewherePerSweep());
+  ASSERT_EQ(s.sweeps, 2u);
+  EXPECT_NEAR(s.onLineBrightShare(), 0.28, 0.05);  // measured 0.282 of 124
+  EXPECT_NEAR(s.asphaltBrightShare(), 0.134, 0.02);  // measured 0.134 of 5,026
+  EXPECT_NEAR(s.runsOnLinesPerSweep(), 2.5, 1.0);
+  EXPECT_NEAR(s.runsElsewherePerSweep(), 13.0, 3.0);
+  // Paint is brighter than asphalt, but not by much: a run lies off the lines 5 times as often as on them.
+  EXPECT_GT(s.onLineBrightShare(), 1.5 * s.asphaltBrightShare());
+  EXPECT_GT(s.runsElsewherePerSweep(), 3.0 * s.runsOnLinesPerSweep());
+}
+
+}  // namespace
+}  // namespace hdprior
