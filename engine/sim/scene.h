@@ -91,7 +91,7 @@ class Scene {
   double maxRise() const { return maxRise_; }
   // Of the road, the sidewalks and the ground beyond.
   uint8_t reflectivity(PointLabel label) const;
-  // The road's at a point: with the roadside's bright asphalt patches.
+  // The road's at a point: with the roadside's bright asphalt patches and flecks.
   uint8_t roadReflectivityAt(const Eigen::Vector2d& city) const;
   const GridGeometry& groundGrid() const { return groundGrid_; }
 
