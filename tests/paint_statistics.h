@@ -22,6 +22,7 @@ struct PaintStatistics {
   long onLine = 0, onLineBright = 0;  // road returns within 0.15 m of a painted lane line
   long asphalt = 0, asphaltBright = 0;  // more than 1 m from every line, outside the crossings
   long runsOnLines = 0, runsElsewhere = 0;  // runs within 0.5 m of a line; runs off the lines and crossings
+  std::vector<std::vector<Eigen::Vector2d>> elsewhere;  // per sweep, where those runs lie (city frame)
   double onLineBrightShare() const { return double(onLineBright) / double(std::max(1L, onLine)); }
   double asphaltBrightShare() const { return double(asphaltBright) / double(std::max(1L, asphalt)); }
   double runsOnLinesPerSweep() const { return double(runsOnLines) / double(std::max<size_t>(1, sweeps)); }
@@ -73,6 +74,7 @@ inline PaintStatistics paintStatistics(const std::filesystem::path& dir, size_t 
       if (labelled.road[k] && labelled.points[k].head<2>().norm() <= options.laneRange) near.push_back(sweep->points[k].intensity);
     if (near.empty()) continue;
     ++s.sweeps;
+    s.elsewhere.emplace_back();
     std::nth_element(near.begin(), near.begin() + long(near.size() / 2), near.end());
     const double threshold = options.paintContrast * near[near.size() / 2];
     for (size_t k = 0; k < labelled.points.size(); ++k) {
@@ -88,7 +90,7 @@ inline PaintStatistics paintStatistics(const std::filesystem::path& dir, size_t 
       if (r.centre.norm() > options.laneRange) continue;
       const Eigen::Vector2d city = yaw * r.centre + origin;
       if (paintedLineDistance(city, map) < 0.5) ++s.runsOnLines;
-      else if (!inCrossing(city, map)) ++s.runsElsewhere;
+      else if (!inCrossing(city, map)) ++s.runsElsewhere, s.elsewhere.back().push_back(city);
     }
   }
   return s;

@@ -31,21 +31,8 @@ TEST(PaintReal, LanePaintIsFaintAndAsphaltIsFleckedWithinEightMetres) {
 // again where the first did, so a drive sees them sweep after sweep (the simulator's patches are
 // fixed in the world for this reason).
 TEST(PaintReal, RunsOffTheLinesRepeatFromSweepToSweep) {
-  const ArgoverseLog log(test::sharedLog());
-  const ChangeOptions options;
-  const VectorMap map = test::paintedNear(readVectorMap(log.mapFiles().vectorMap), log.cityTEgo().poses().front().translation().head<2>(), 500.0);
-  std::vector<std::vector<Eigen::Vector2d>> runs(2);
-  for (size_t i = 0; i < 2; ++i) {
-    const auto sweep = log.sweep(i);
-    const SE3 pose = log.cityTEgo().at(sweep->timestampNs);
-    const LabelledSweep labelled = labelSweep(*sweep, levelRotation(pose), defaultConfig().roadPoints);
-    const Eigen::Rotation2Dd yaw(yawOf(pose));
-    for (const PaintRun& r : findSweepPaint(*sweep, labelled, options).runs) {
-      const Eigen::Vector2d city = yaw * r.centre + pose.translation().head<2>();
-      if (r.centre.norm() <= options.laneRange && test::paintedLineDistance(city, map) >= 0.5 && !test::inCrossing(city, map))
-        runs[i].push_back(city);
-    }
-  }
+  const std::vector<std::vector<Eigen::Vector2d>> runs = test::paintStatistics(test::sharedLog(), 1, 2).elsewhere;
+  ASSERT_EQ(runs.size(), 2u);
   int again = 0;
   for (const Eigen::Vector2d& a : runs[1])
     again += std::any_of(runs[0].begin(), runs[0].end(), [&](const Eigen::Vector2d& b) { return (a - b).norm() <= 0.2; });
