@@ -41,14 +41,15 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
   for (const CrossingVerdict& c : report.crossings) {
     if (c.verdict != MapVerdict::Contradicted || c.bestFrame < 0) continue;
     char b[160];
-    std::snprintf(b, sizeof b, "crossing %lld: no paint in %d road points near the lidar (confidence %.2f)", (long long)c.id,
-                  c.roadPoints, c.confidence);
+    std::snprintf(b, sizeof b, "crossing %lld: paint in %d of %d road cells, as on the asphalt (%.0f %%; confidence %.2f)",
+                  (long long)c.id, c.paintCells, c.roadCells, 100.0 * c.asphaltShare, c.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(c.bestFrame), b});
   }
   for (const MissingCrossing& m : report.missingCrossings) {
     if (m.bestFrame < 0) continue;
     char b[160];
-    std::snprintf(b, sizeof b, "unmapped crossing: %d paint runs off the map's paint (confidence %.2f)", m.paintRuns, m.confidence);
+    std::snprintf(b, sizeof b, "unmapped crossing: paint in %d of %d road cells off the map's paint (confidence %.2f)", m.paintCells,
+                  m.roadCells, m.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
   }
   for (const LaneLineStretch& s : report.laneLines) {

@@ -24,11 +24,20 @@ struct ChangeOptions {
   double paintContrast = 1.7;  // a bright return: this many times the median of the sweep's near ground
   int paintRunPoints = 3;      // consecutive bright returns of a ring that make a paint run ...
   double paintRunGap = 0.15;   // ... no farther apart than this (metres)
-  // Paint runs per ground return near the sensor: inside a painted crossing, and on plain asphalt.
-  double crossingPaintRate = 0.004, asphaltPaintRate = 0.001;
+  // Crossings: the road near the sensor in cells this wide (metres); a cell with a paint run in it is painted.
+  double paintCell = 0.25;
+  // A painted crossing's share of painted cells against the log's asphalt's (measured on the tuning
+  // family: 2-6x; real edge lines cover a fifth of a crossing).
+  double crossingContrast = 3.0;
+  double crossingPaintShare = 0.1;  // ... and at least this share, on clean asphalt
   double crossingEvidence = 3.0;  // log-likelihood ratio of paint against none for a crossing's verdict
-  double missingCrossingExtent = 2.0;  // metres: unmapped paint this deep and this wide is a crossing ...
-  double crossingAngle = 0.52;         // ... when its long side is at least this far (radians) off the lanes' direction
+  // A crossing is contradicted only where its share is at most this many times the asphalt's: a
+  // crossing seen at the edge of the range or worn reads between (1.2-1.7x on the tuning family).
+  double crossingAsphaltLevel = 1.25;
+  double crossingDepth = 3.0, crossingWidth = 6.0;  // metres: the band an unmapped crossing is looked for in
+  // The log-likelihood ratio an unmapped crossing needs: the band is looked for around every stray
+  // run, and a road's own marks cluster (on the tuning family, false bands reach 10).
+  double missingCrossingEvidence = 12.0;
   // Paint this near a painted lane boundary is the line's: the poses are off by up to half a
   // metre and a double line is 0.3 m wide.
   double paintLineReach = 1.0;

@@ -79,7 +79,11 @@ json crossingFeature(const CrossingVerdict& c) {
                      {"confidence", number(c.confidence)},
                      {"first_frame", c.firstFrame},
                      {"best_frame", c.bestFrame},
-                     {"evidence", {{"kind", "paint"}, {"road_points", c.roadPoints}, {"paint_runs", c.paintRuns}}}};
+                     {"evidence",
+                      {{"kind", "paint"},
+                       {"road_cells", c.roadCells},
+                       {"paint_cells", c.paintCells},
+                       {"asphalt_paint_share", number(c.asphaltShare)}}}};
   if (c.verdict == MapVerdict::Contradicted) properties["change"] = "insert_crosswalk";
   return feature(polygon(c.outline), properties);
 }
@@ -112,7 +116,7 @@ json missingCrossingFeature(const MissingCrossing& m) {
             {"confidence", number(m.confidence)},
             {"first_frame", m.firstFrame},
             {"best_frame", m.bestFrame},
-            {"evidence", {{"kind", "paint_outside_map"}, {"paint_runs", m.paintRuns}}},
+            {"evidence", {{"kind", "paint_outside_map"}, {"road_cells", m.roadCells}, {"paint_cells", m.paintCells}}},
             {"change", "delete_crosswalk"}}}};
 }
 
@@ -124,7 +128,7 @@ std::string changesGeoJson(const MapChangeReport& report, const std::string& log
     if (s.samples > 0) features.push_back(stretchFeature(s));
   for (const MissingSurface& m : report.missing) features.push_back(missingFeature(m));
   for (const CrossingVerdict& c : report.crossings)
-    if (c.roadPoints > 0) features.push_back(crossingFeature(c));
+    if (c.roadCells > 0) features.push_back(crossingFeature(c));
   for (const MissingCrossing& m : report.missingCrossings) features.push_back(missingCrossingFeature(m));
   for (const LaneLineStretch& s : report.laneLines) features.push_back(laneLineFeature(s));
   return json{{"type", "FeatureCollection"}, {"name", logId}, {"crs_note", "city frame of the log, metres"}, {"features", features}}

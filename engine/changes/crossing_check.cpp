@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
-
-#include <Eigen/Eigenvalues>
 
 #include "engine/geom/polygon2d.h"
 #include "engine/geom/se2.h"
@@ -16,66 +13,22 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Outline = std::vector<Vec2>;
 
-int64_t cellKey(const Vec2& city) {
-  return (int64_t(std::floor(city.x())) << 32) ^ (int64_t(std::floor(city.y())) & 0xffffffff);
-}
-
-// Log-likelihood ratio of `runs` paint runs over `road` points: a painted crossing against asphalt.
-double paintEvidence(int runs, int road, const ChangeOptions& o) {
-  return runs * std::log(o.crossingPaintRate / o.asphaltPaintRate) - road * (o.crossingPaintRate - o.asphaltPaintRate);
-}
-
 double confidenceOf(double evidence) { return 1.0 / (1.0 + std::exp(-std::abs(evidence))); }
 
-// Stray runs joined when within `link` metres of each other (single linkage).
-std::vector<std::vector<size_t>> clusters(const std::vector<Vec2>& points, double link) {
-  std::vector<int> group(points.size(), -1);
-  std::vector<std::vector<size_t>> out;
-  for (size_t seed = 0; seed < points.size(); ++seed) {
-    if (group[seed] >= 0) continue;
-    group[seed] = int(out.size());
-    std::vector<size_t> members{seed};
-    for (size_t k = 0; k < members.size(); ++k)
-      for (size_t j = 0; j < points.size(); ++j)
-        if (group[j] < 0 && (points[j] - points[members[k]]).norm() <= link) {
-          group[j] = group[seed];
-          members.push_back(j);
-        }
-    out.push_back(std::move(members));
+// The frame of the most runs among `frames` (sorted), and the first.
+std::pair<int, int> firstAndBestFrame(std::vector<int> frames) {
+  std::sort(frames.begin(), frames.end());
+  int best = -1, most = 0;
+  for (size_t i = 0, j; i < frames.size(); i = j) {
+    for (j = i; j < frames.size() && frames[j] == frames[i]; ++j) {}
+    if (int(j - i) > most) most = int(j - i), best = frames[i];
   }
-  return out;
-}
-
-// Points' rectangle along their principal axes, grown by a margin: its sides (long first) and long axis.
-struct Patch {
-  Outline outline;
-  Vec2 extent, axis;
-};
-
-Patch principalRectangle(const std::vector<Vec2>& points, double margin) {
-  Vec2 mean = Vec2::Zero();
-  for (const Vec2& p : points) mean += p;
-  mean /= double(points.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Vec2& p : points) cov += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const Vec2 u = eig.eigenvectors().col(1), v(-u.y(), u.x());
-  Vec2 lo(1e9, 1e9), hi(-1e9, -1e9);
-  for (const Vec2& p : points) {
-    const Vec2 q((p - mean).dot(u), (p - mean).dot(v));
-    lo = lo.cwiseMin(q);
-    hi = hi.cwiseMax(q);
-  }
-  const Vec2 extent = hi - lo;
-  lo -= Vec2(margin, margin);
-  hi += Vec2(margin, margin);
-  auto at = [&](double a, double b) { return Vec2(mean + a * u + b * v); };
-  return {{at(lo.x(), lo.y()), at(hi.x(), lo.y()), at(hi.x(), hi.y()), at(lo.x(), hi.y())}, extent, u};
+  return {frames.empty() ? -1 : frames.front(), best};
 }
 
 }  // namespace
 
-CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options) {
+CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options), lines_(map) {
   for (const PedestrianCrossing& c : map.pedestrianCrossings) {
     if (c.edge1.size() < 2 || c.edge2.size() < 2) continue;
     Crossing crossing;
@@ -83,36 +36,28 @@ CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& op
     crossing.verdict.outline = crossingOutline(c);
     crossing.reach = grownQuad(crossing.verdict.outline, 0.5);
     crossing.explains = grownQuad(crossing.verdict.outline, 1.0);
+    crossing.lo = crossing.hi = crossing.explains.front();
+    for (const Vec2& p : crossing.explains) crossing.lo = crossing.lo.cwiseMin(p), crossing.hi = crossing.hi.cwiseMax(p);
     crossings_.push_back(std::move(crossing));
   }
-  for (const LaneSegment& lane : map.laneSegments)
-    for (const auto& [line, type] : {std::pair{&lane.leftLaneBoundary, &lane.leftLaneMarkType},
-                                     std::pair{&lane.rightLaneBoundary, &lane.rightLaneMarkType}})
-      if (line->size() >= 2) {
-        std::vector<Vec2> planar;
-        for (const Eigen::Vector3d& p : *line) planar.push_back(p.head<2>());
-        (isPaintedMark(*type) ? paintedLines_ : unpaintedLines_).push_back(std::move(planar));
-      }
 }
 
-bool CrossingEvidence::onPaintedLine(const Vec2& city) const {
-  const Vec2 point[1] = {city};
-  for (const std::vector<Vec2>& line : paintedLines_)
-    if (polylineDistance(point, line, false) <= options_.paintLineReach) return true;
-  return false;
+int64_t CrossingEvidence::keyOf(const Vec2& city) const {
+  const int64_t col = int64_t(std::floor(city.x() / options_.paintCell)), row = int64_t(std::floor(city.y() / options_.paintCell));
+  return (col << 32) ^ (row & 0xffffffff);
 }
 
-std::optional<Vec2> CrossingEvidence::laneDirectionAt(const Vec2& city) const {
-  double best = 15.0;
-  std::optional<Vec2> direction;
-  for (const auto* lines : {&paintedLines_, &unpaintedLines_})
-    for (const std::vector<Vec2>& line : *lines)
-      for (size_t i = 0; i + 1 < line.size(); ++i) {
-        const Vec2 a[1] = {city}, segment[2] = {line[i], line[i + 1]};
-        const double d = polylineDistance(a, segment, false);
-        if (d < best && (line[i + 1] - line[i]).norm() > 1e-6) best = d, direction = (line[i + 1] - line[i]).normalized();
-      }
-  return direction;
+CrossingEvidence::Cell& CrossingEvidence::cellAt(const Vec2& city) {
+  const auto [it, inserted] = cells_.try_emplace(keyOf(city));
+  if (inserted) {
+    const Vec2 centre = ((city / options_.paintCell).array().floor() + 0.5) * options_.paintCell;
+    if (lines_.nearPainted(centre, options_.paintLineReach)) it->second.place = Place::PaintedLine;
+    else
+      for (const Crossing& c : crossings_)
+        if ((centre.array() >= c.lo.array()).all() && (centre.array() <= c.hi.array()).all() && ringContains(c.explains, centre))
+          it->second.place = Place::Crossing;
+  }
+  return it->second;
 }
 
 void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTEgo) {
@@ -121,24 +66,23 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
   std::vector<Vec2> road, runs;
   for (const Vec2& p : paint.road) road.push_back(r * p + t);
   for (const PaintRun& run : paint.runs) runs.push_back(r * run.centre + t);
-  for (const Vec2& p : road) ++roadCells_[cellKey(p)];
+  for (const Vec2& p : road) ++cellAt(p).road;
+  std::vector<Place> places;
+  for (const Vec2& p : runs) {
+    Cell& cell = cellAt(p);
+    ++cell.runs;
+    places.push_back(cell.place);
+    if (cell.place == Place::Road) stray_.push_back({p, frame});
+  }
 
-  std::vector<bool> explained(runs.size(), false), onLine(runs.size());
-  for (size_t k = 0; k < runs.size(); ++k) onLine[k] = onPaintedLine(runs[k]);
   for (Crossing& c : crossings_) {
-    const double reach = options_.paintRange + (c.reach[0] - c.reach[2]).norm() + (c.reach[1] - c.reach[3]).norm();
+    const double reach = options_.paintRange + (c.hi - c.lo).norm();
     if ((c.reach[0] - t).norm() > reach) continue;
     int inside = 0, painted = 0;
     for (const Vec2& p : road) inside += ringContains(c.reach, p);
-    for (size_t k = 0; k < runs.size(); ++k)
-      if (ringContains(c.explains, runs[k])) {
-        explained[k] = true;
-        painted += !onLine[k] && ringContains(c.reach, runs[k]);
-      }
+    for (size_t k = 0; k < runs.size(); ++k) painted += places[k] == Place::Crossing && ringContains(c.reach, runs[k]);
     if (inside == 0) continue;
     CrossingVerdict& v = c.verdict;
-    v.roadPoints += inside;
-    v.paintRuns += painted;
     if (v.firstFrame < 0) v.firstFrame = frame;
     if (painted > c.bestFrameRuns || (painted == c.bestFrameRuns && inside > c.bestFrameRoadPoints)) {
       c.bestFrameRuns = painted;
@@ -146,70 +90,138 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
       v.bestFrame = frame;
     }
   }
-  for (size_t k = 0; k < runs.size(); ++k)
-    if (!explained[k] && !onLine[k]) stray_.push_back({runs[k], frame});
 }
 
-int CrossingEvidence::roadPointsIn(const Outline& outline) const {
+CrossingEvidence::Tally CrossingEvidence::asphalt() const {
+  Tally t;
+  for (const auto& [key, cell] : cells_)
+    if (cell.place == Place::Road && cell.road > 0) ++t.road, t.painted += cell.runs > 0;
+  return t;
+}
+
+CrossingEvidence::Tally CrossingEvidence::tallyIn(const Outline& outline, Place place) const {
   Vec2 lo = outline.front(), hi = outline.front();
   for (const Vec2& p : outline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  int count = 0;
-  for (double x = std::floor(lo.x()); x <= hi.x(); x += 1.0)
-    for (double y = std::floor(lo.y()); y <= hi.y(); y += 1.0) {
-      const Vec2 cell(x, y);
-      if (!ringContains(outline, cell + Vec2(0.5, 0.5))) continue;
-      const auto it = roadCells_.find(cellKey(cell));
-      if (it != roadCells_.end()) count += it->second;
+  const double s = options_.paintCell;
+  Tally t;
+  for (double x = (std::floor(lo.x() / s) + 0.5) * s; x <= hi.x(); x += s)
+    for (double y = (std::floor(lo.y() / s) + 0.5) * s; y <= hi.y(); y += s) {
+      if (!ringContains(outline, {x, y})) continue;
+      const auto it = cells_.find(keyOf({x, y}));
+      if (it == cells_.end() || it->second.place != place || it->second.road == 0) continue;
+      ++t.road;
+      t.painted += it->second.runs > 0;
     }
-  return count;
+  return t;
+}
+
+CrossingEvidence::Tally CrossingEvidence::tallyInBand(const Vec2& centre, const Vec2& along, double u0, double u1, double v0,
+                                                      double v1) const {
+  const Vec2 across(-along.y(), along.x());
+  const double s = options_.paintCell;
+  Tally t;
+  for (double u = u0 + s / 2; u < u1; u += s)
+    for (double v = v0 + s / 2; v < v1; v += s) {
+      const auto it = cells_.find(keyOf(centre + u * along + v * across));
+      if (it == cells_.end() || it->second.place != Place::Road || it->second.road == 0) continue;
+      ++t.road;
+      t.painted += it->second.runs > 0;
+    }
+  return t;
+}
+
+// Log-likelihood ratio of a tally's painted cells: a painted crossing (options.crossingContrast
+// times the asphalt's share, at least options.crossingPaintShare) against the asphalt.
+double CrossingEvidence::evidence(const Tally& t, double asphaltShare) const {
+  const double s0 = std::clamp(asphaltShare, 0.005, 0.5);
+  const double s1 = std::min(0.95, std::max(options_.crossingContrast * s0, options_.crossingPaintShare));
+  return t.painted * std::log(s1 / s0) + (t.road - t.painted) * std::log((1.0 - s1) / (1.0 - s0));
 }
 
 std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
+  const Tally road = asphalt();
+  const double share = road.road > 0 ? double(road.painted) / road.road : 0.0;
   std::vector<CrossingVerdict> out;
   for (const Crossing& c : crossings_) {
     CrossingVerdict v = c.verdict;
-    const double evidence = paintEvidence(v.paintRuns, v.roadPoints, options_);
-    v.verdict = evidence >= options_.crossingEvidence    ? MapVerdict::Consistent
-                : evidence <= -options_.crossingEvidence ? MapVerdict::Contradicted
-                                                         : MapVerdict::Unobserved;
-    v.confidence = v.verdict == MapVerdict::Unobserved ? 0.0 : confidenceOf(evidence);
+    const Tally t = tallyIn(c.reach, Place::Crossing);
+    v.roadCells = t.road;
+    v.paintCells = t.painted;
+    v.asphaltShare = share;
+    const double e = evidence(t, share);
+    const bool asAsphalt = t.painted <= options_.crossingAsphaltLevel * share * t.road;
+    v.verdict = e >= options_.crossingEvidence                  ? MapVerdict::Consistent
+                : e <= -options_.crossingEvidence && asAsphalt ? MapVerdict::Contradicted
+                                                               : MapVerdict::Unobserved;
+    v.confidence = v.verdict == MapVerdict::Unobserved ? 0.0 : confidenceOf(e);
     out.push_back(std::move(v));
   }
+  // Faint or worn paint reads as asphalt: no paint is evidence only in a log whose crossings show it.
+  const bool paintShows = std::any_of(out.begin(), out.end(), [](const CrossingVerdict& v) { return v.verdict == MapVerdict::Consistent; });
+  for (CrossingVerdict& v : out)
+    if (!paintShows && v.verdict == MapVerdict::Contradicted) v.verdict = MapVerdict::Unobserved, v.confidence = 0.0;
   return out;
 }
 
 std::vector<MissingCrossing> CrossingEvidence::missing() const {
-  std::vector<Vec2> points;
-  for (const StrayRun& s : stray_) points.push_back(s.city);
+  const Tally road = asphalt();
+  if (road.road == 0) return {};
+  const double share = double(road.painted) / road.road;
+  const double d = options_.crossingDepth, w = options_.crossingWidth;
+  struct Candidate {
+    Vec2 centre, along;
+    double evidence;
+  };
+  std::vector<Candidate> candidates;
+  std::unordered_map<int64_t, bool> tried;  // one candidate per metre square
+  for (const StrayRun& s : stray_) {
+    if (!tried.try_emplace((int64_t(std::floor(s.city.x())) << 32) ^ (int64_t(std::floor(s.city.y())) & 0xffffffff), true).second) continue;
+    const std::optional<Vec2> along = lines_.directionAt(s.city, 15.0);
+    if (!along) continue;
+    // Painted at both edges (a crossing's edge lines or its stripes' ends; a stop line has one), not in the flanks.
+    const Tally near = tallyInBand(s.city, *along, -d / 2, -d / 6, -w / 2, w / 2), middle = tallyInBand(s.city, *along, -d / 6, d / 6, -w / 2, w / 2),
+                far = tallyInBand(s.city, *along, d / 6, d / 2, -w / 2, w / 2);
+    if (evidence(near, share) <= 0.0 || evidence(far, share) <= 0.0) continue;
+    const Tally band{near.road + middle.road + far.road, near.painted + middle.painted + far.painted};
+    // A band seen over less than a third of it is a glimpse.
+    if (band.road < d * w / (3.0 * options_.paintCell * options_.paintCell)) continue;
+    const double e = evidence(band, share);
+    if (e < options_.missingCrossingEvidence) continue;
+    const Tally before = tallyInBand(s.city, *along, -1.5 * d - 1.0, -d / 2 - 1.0, -w / 2, w / 2),
+                after = tallyInBand(s.city, *along, d / 2 + 1.0, 1.5 * d + 1.0, -w / 2, w / 2);
+    if (evidence({before.road + after.road, before.painted + after.painted}, share) > 0.0) continue;
+    candidates.push_back({s.city, *along, e});
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.evidence > b.evidence; });
+
   std::vector<MissingCrossing> out;
-  // 2.5 m: a crossing whose paint the lane lines' reach cuts in two is one patch again.
-  for (const std::vector<size_t>& members : clusters(points, 2.5)) {
-    std::vector<Vec2> patch;
+  std::vector<Outline> taken;  // the crossings found, grown by their depth: one crossing is one report
+  for (const Candidate& c : candidates) {
+    if (std::any_of(taken.begin(), taken.end(), [&](const Outline& o) { return ringContains(o, c.centre); })) continue;
+    // Across the lanes as far as metre-wide slices of the band stay painted like a crossing (or
+    // are a painted lane line's).
+    const auto painted = [&](double v0, double v1) {
+      const Tally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, v0, v1);
+      return (t.road == 0 && lines_.nearPainted(c.centre + (v0 + v1) / 2 * Vec2(-c.along.y(), c.along.x()), options_.paintLineReach)) ||
+             evidence(t, share) > 0.0;
+    };
+    double lo = -w / 2, hi = w / 2;
+    while (hi < 15.0 && painted(hi, hi + 1.0)) hi += 1.0;
+    while (lo > -15.0 && painted(lo - 1.0, lo)) lo -= 1.0;
+    const Vec2 across(-c.along.y(), c.along.x());
+    const auto at = [&](double u, double v) { return Vec2(c.centre + u * c.along + v * across); };
     MissingCrossing m;
+    m.outline = {at(-d / 2, lo), at(d / 2, lo), at(d / 2, hi), at(-d / 2, hi)};
+    const Tally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, lo, hi);
+    m.roadCells = t.road;
+    m.paintCells = t.painted;
+    m.confidence = confidenceOf(evidence(t, share));
     std::vector<int> frames;
-    for (size_t k : members) {
-      patch.push_back(points[k]);
-      frames.push_back(stray_[k].frame);
-    }
-    if (patch.size() < 3) continue;
-    const Patch rectangle = principalRectangle(patch, 0.5);
-    if (rectangle.extent.minCoeff() < options_.missingCrossingExtent) continue;
-    // A crossing runs across the lanes; paint along them is a lane line the map lacks or misplaces.
-    const std::optional<Vec2> lane = laneDirectionAt(rectangle.outline[0] / 2 + rectangle.outline[2] / 2);
-    if (lane && std::abs(lane->dot(rectangle.axis)) > std::cos(options_.crossingAngle)) continue;
-    m.outline = rectangle.outline;
-    m.paintRuns = int(patch.size());
-    const double evidence = paintEvidence(m.paintRuns, roadPointsIn(m.outline), options_);
-    if (evidence < options_.crossingEvidence) continue;
-    m.confidence = confidenceOf(evidence);
-    std::sort(frames.begin(), frames.end());
-    m.firstFrame = frames.front();
-    int best = 0;  // the frame with most of the patch's runs
-    for (size_t i = 0, j; i < frames.size(); i = j) {
-      for (j = i; j < frames.size() && frames[j] == frames[i]; ++j) {}
-      if (int(j - i) > best) best = int(j - i), m.bestFrame = frames[i];
-    }
+    for (const StrayRun& s : stray_)
+      if (ringContains(m.outline, s.city)) frames.push_back(s.frame);
+    std::tie(m.firstFrame, m.bestFrame) = firstAndBestFrame(std::move(frames));
     if (signedArea(m.outline) < 0) std::reverse(m.outline.begin(), m.outline.end());
+    taken.push_back(grownQuad(m.outline, d));
     out.push_back(std::move(m));
   }
   return out;

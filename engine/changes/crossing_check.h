@@ -1,12 +1,12 @@
 #pragma once
 #include <cstdint>
-#include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "engine/changes/change_options.h"
+#include "engine/changes/lane_line_index.h"
 #include "engine/changes/map_verdict.h"
 #include "engine/changes/sweep_paint.h"
 #include "engine/geom/se3.h"
@@ -20,7 +20,8 @@ struct CrossingVerdict {
   std::vector<Eigen::Vector2d> outline;  // edge1, then edge2 backwards (city x, y)
   MapVerdict verdict = MapVerdict::Unobserved;
   double confidence = 0.0;
-  int roadPoints = 0, paintRuns = 0;  // near the sensor, inside the outline
+  int roadCells = 0, paintCells = 0;  // cells (options.paintCell) seen near the sensor inside the outline; those with paint
+  double asphaltShare = 0.0;          // the share of the log's road cells with paint, off the map's paint
   int firstFrame = -1, bestFrame = -1;  // the first frame with road points inside; the one with most paint (or road points)
 };
 
@@ -28,18 +29,23 @@ struct CrossingVerdict {
 struct MissingCrossing {
   std::vector<Eigen::Vector2d> outline;  // a rectangle around the paint, counter-clockwise
   double confidence = 0.0;
-  int paintRuns = 0;
+  int roadCells = 0, paintCells = 0;
   int firstFrame = -1, bestFrame = -1;
 };
 
-// The paint evidence of a log's sweeps against its map's crossings and lane lines.
+// The paint evidence of a log's sweeps against its map's crossings.
 //
-// A crossing is painted (consistent) or not (contradicted) by the likelihood ratio of its paint
-// runs under two Poisson rates per road point near the sensor: options.crossingPaintRate (a
-// painted crossing) against options.asphaltPaintRate (plain asphalt); too few road points to
-// tell leave it unobserved; runs on a painted lane line through it are not its paint. Runs outside
-// every crossing and off every painted lane line that gather into a patch
-// options.missingCrossingExtent deep and wide, its long side across the lanes, are a missing crossing.
+// The road near the sensor is cut into cells of options.paintCell; a cell with a paint run in it
+// over the drive is painted. A road's own marks (repairs, sealed cracks, bright aggregate) are
+// painted cells too, fixed in the world, so a crossing is judged against the log's asphalt: the
+// share of painted cells off the map's lane lines and crossings. A crossing whose painted share is
+// options.crossingContrast times that is consistent, one whose share is the asphalt's (at most
+// options.crossingAsphaltLevel times it) is contradicted, by their likelihood ratio (binomial per
+// cell); too few cells to tell leave it
+// unobserved, and so does a log in which no crossing shows paint (faint paint reads as asphalt).
+// Paint on a painted lane line (options.paintLineReach) is the line's. Off the map's paint, a band
+// options.crossingDepth deep along the lanes that is painted like a crossing at both its edges,
+// between flanks that are not, is a missing crossing (options.missingCrossingEvidence).
 class CrossingEvidence {
  public:
   CrossingEvidence(const VectorMap& map, const ChangeOptions& options);
@@ -51,26 +57,39 @@ class CrossingEvidence {
   std::vector<MissingCrossing> missing() const;
 
  private:
+  enum class Place : uint8_t { Road, PaintedLine, Crossing };
+  struct Cell {
+    int road = 0, runs = 0;
+    Place place = Place::Road;
+  };
   struct Crossing {
     CrossingVerdict verdict;
     std::vector<Eigen::Vector2d> reach;     // the outline grown by half a metre: paint at the mapped edge counts
     std::vector<Eigen::Vector2d> explains;  // grown by a metre: paint here is the crossing's, never a missing one
+    Eigen::Vector2d lo, hi;                 // the bounds of `explains`
     int bestFrameRuns = -1, bestFrameRoadPoints = -1;
   };
   struct StrayRun {
     Eigen::Vector2d city;
     int frame;
   };
-  bool onPaintedLine(const Eigen::Vector2d& city) const;
-  // The direction of the lane boundary nearest to a point (within 15 m).
-  std::optional<Eigen::Vector2d> laneDirectionAt(const Eigen::Vector2d& city) const;
-  int roadPointsIn(const std::vector<Eigen::Vector2d>& outline) const;
+  struct Tally {
+    int road = 0, painted = 0;
+  };
+  // Cells of the log's road off the map's paint: seen, and painted.
+  Tally asphalt() const;
+  Tally tallyIn(const std::vector<Eigen::Vector2d>& outline, Place place) const;
+  // Road cells (Place::Road) in a rectangle: u along `along` from u0 to u1, v across from v0 to v1, about `centre`.
+  Tally tallyInBand(const Eigen::Vector2d& centre, const Eigen::Vector2d& along, double u0, double u1, double v0, double v1) const;
+  double evidence(const Tally& t, double asphaltShare) const;
+  Cell& cellAt(const Eigen::Vector2d& city);
+  int64_t keyOf(const Eigen::Vector2d& city) const;
 
   ChangeOptions options_;
+  LaneLineIndex lines_;
   std::vector<Crossing> crossings_;
-  std::vector<std::vector<Eigen::Vector2d>> paintedLines_, unpaintedLines_;  // the lanes' boundaries
   std::vector<StrayRun> stray_;
-  std::unordered_map<int64_t, int> roadCells_;  // road points near the sensor per metre square (city)
+  std::unordered_map<int64_t, Cell> cells_;
 };
 
 }  // namespace hdprior

@@ -62,7 +62,7 @@ void ChangesLayer::build(const Scene& scene) {
     for (const CrossingVerdict& c : report.crossings) {
       if (c.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, c.outline, true), 0.45f, contradicted_);
       else if (c.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, c.outline, true), 0.2f, consistent_);
-      else if (show_ == 2 && c.roadPoints > 0) strokes.polyline(onGround(scene, c.outline, true), 0.12f, unobserved_);
+      else if (show_ == 2 && c.roadCells > 0) strokes.polyline(onGround(scene, c.outline, true), 0.12f, unobserved_);
     }
     for (const MissingCrossing& m : report.missingCrossings) strokes.polyline(onGround(scene, m.outline, true), 0.3f, missing_);
     for (const LaneLineStretch& s : report.laneLines) {

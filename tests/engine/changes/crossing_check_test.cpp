@@ -47,23 +47,45 @@ TEST(CrossingCheck, PaintedEdgesMakeACrossingConsistent) {
   EXPECT_EQ(verdicts[0].id, 7);
   EXPECT_EQ(verdicts[0].verdict, MapVerdict::Consistent);
   EXPECT_GT(verdicts[0].confidence, 0.95);
-  EXPECT_EQ(verdicts[0].paintRuns, 34);
+  EXPECT_EQ(verdicts[0].paintCells, 34);
   EXPECT_EQ(verdicts[0].bestFrame, 3);
   EXPECT_TRUE(evidence.missing().empty());
 }
 
-TEST(CrossingCheck, AWellSeenCrossingWithoutPaintIsContradictedAndAGlimpseIsNot) {
+// The same crossing behind the sensor (x -8..-5).
+PedestrianCrossing crossingBehind(int64_t id) {
+  PedestrianCrossing c = crossingAhead(id);
+  for (Eigen::Vector3d& p : c.edge1) p.x() -= 13;
+  for (Eigen::Vector3d& p : c.edge2) p.x() -= 13;
+  return c;
+}
+
+TEST(CrossingCheck, AWellSeenCrossingWithoutPaintIsContradictedWhereOthersShowPaint) {
   VectorMap map;
-  map.pedestrianCrossings = {crossingAhead(7)};
+  map.pedestrianCrossings = {crossingAhead(7), crossingBehind(8)};
+  SweepPaint paint = groundAround(12.0);
+  addRunsAlong(paint, {-7.9, -4}, {-7.9, 4});
+  addRunsAlong(paint, {-5.1, -4}, {-5.1, 4});
   CrossingEvidence seen(map, ChangeOptions{});
-  seen.add(0, groundAround(12.0), SE3::Identity());
+  seen.add(0, paint, SE3::Identity());
   EXPECT_EQ(seen.verdicts()[0].verdict, MapVerdict::Contradicted);
-  EXPECT_GT(seen.verdicts()[0].roadPoints, 2000);
+  EXPECT_GT(seen.verdicts()[0].roadCells, 500);
+  EXPECT_EQ(seen.verdicts()[1].verdict, MapVerdict::Consistent);
+
+  // Where no crossing shows paint, the paint may be too faint to see: nothing is contradicted.
+  CrossingEvidence faint(map, ChangeOptions{});
+  faint.add(0, groundAround(12.0), SE3::Identity());
+  EXPECT_EQ(faint.verdicts()[0].verdict, MapVerdict::Unobserved);
+  EXPECT_EQ(faint.verdicts()[1].verdict, MapVerdict::Unobserved);
 
   CrossingEvidence glimpsed(map, ChangeOptions{});
-  SweepPaint few;
-  for (double y = -4; y <= 4; y += 0.1) few.road.emplace_back(6.0, y);  // one ring across it
+  SweepPaint few = paint;
+  few.road.clear();
+  for (double y = -0.5; y <= 0.5; y += 0.1) few.road.emplace_back(6.0, y);  // a metre of one ring across the first
+  for (double x = -8; x <= -5; x += 0.1)
+    for (double y = -4; y <= 4; y += 0.1) few.road.emplace_back(x, y);
   glimpsed.add(0, few, SE3::Identity());
+  EXPECT_EQ(glimpsed.verdicts()[1].verdict, MapVerdict::Consistent);
   EXPECT_EQ(glimpsed.verdicts()[0].verdict, MapVerdict::Unobserved);
   EXPECT_EQ(glimpsed.verdicts()[0].confidence, 0.0);
 }
@@ -79,7 +101,7 @@ TEST(CrossingCheck, TheSweepsPoseCarriesItsPaintIntoTheCity) {
   addRunsAlong(paint, {5.1, -4}, {5.1, 4});
   addRunsAlong(paint, {7.9, -4}, {7.9, 4});
   evidence.add(0, paint, SE3::Identity());  // the crossing is 100 m away: nothing seen
-  EXPECT_EQ(evidence.verdicts()[0].roadPoints, 0);
+  EXPECT_EQ(evidence.verdicts()[0].roadCells, 0);
   SE3 moved = SE3::Identity();
   moved.translation().x() = 100;
   evidence.add(1, paint, moved);
@@ -107,6 +129,33 @@ TEST(CrossingCheck, PaintTheMapLacksIsAMissingCrossingButLaneLinesAndStopLinesAr
   EXPECT_GT(signedArea(missing[0].outline), 20.0);
   EXPECT_GT(missing[0].confidence, 0.95);
   EXPECT_EQ(missing[0].bestFrame, 0);
+}
+
+// Asphalt with a bright patch in 5 % of its quarter-metre cells (a fixed hash), a crossing (x 5..8)
+// whose stripes show in a third of its cells when `painted`, and one behind (x -8..-5) that always shows.
+SweepPaint patchyRoad(bool painted) {
+  SweepPaint paint = groundAround(12.0);
+  for (double x = -11.875; x < 12; x += 0.25)
+    for (double y = -11.875; y < 12; y += 0.25) {
+      if (std::hypot(x, y) > 12.0) continue;
+      const uint32_t hash = uint32_t(std::lround(x * 4 + 100) * 7919 + std::lround(y * 4 + 100) * 104729) % 1000;
+      const bool inCrossing = x > 5 && x < 8 && std::abs(y) < 4, inOther = x > -8 && x < -5 && std::abs(y) < 4;
+      if (inCrossing ? (painted && hash < 330) || hash < 50 : inOther ? hash < 330 : hash < 50) paint.runs.push_back({{x, y}, 4});
+    }
+  return paint;
+}
+
+TEST(CrossingCheck, AsphaltPatchesAreTheLogsBackgroundNotACrossing) {
+  VectorMap map;
+  map.pedestrianCrossings = {crossingAhead(7), crossingBehind(8)};
+  for (const bool painted : {true, false}) {
+    CrossingEvidence evidence(map, ChangeOptions{});
+    for (int frame = 0; frame < 3; ++frame) evidence.add(frame, patchyRoad(painted), SE3::Identity());
+    const CrossingVerdict v = evidence.verdicts()[0];
+    EXPECT_NEAR(v.asphaltShare, 0.05, 0.015);
+    EXPECT_EQ(v.verdict, painted ? MapVerdict::Consistent : MapVerdict::Contradicted) << painted;
+    EXPECT_TRUE(evidence.missing().empty()) << painted;
+  }
 }
 
 TEST(SweepPaint, ARunIsThreeBrightReturnsOfOneRingInARow) {
