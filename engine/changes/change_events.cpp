@@ -41,7 +41,7 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
   for (const CrossingVerdict& c : report.crossings) {
     if (c.verdict != MapVerdict::Contradicted || c.bestFrame < 0) continue;
     char b[160];
-    std::snprintf(b, sizeof b, "crossing %lld: paint in %d of %d road cells, as on the asphalt (%.0f %%; confidence %.2f)",
+    std::snprintf(b, sizeof b, "crossing %lld: no more paint than the asphalt (%d of %d road cells, asphalt %.0f %%; confidence %.2f)",
                   (long long)c.id, c.paintCells, c.roadCells, 100.0 * c.asphaltShare, c.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(c.bestFrame), b});
   }
