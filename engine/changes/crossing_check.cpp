@@ -92,11 +92,11 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
   }
 }
 
-CrossingEvidence::Tally CrossingEvidence::asphalt() const {
+double CrossingEvidence::asphaltShare() const {
   Tally t;
   for (const auto& [key, cell] : cells_)
     if (cell.place == Place::Road && cell.road > 0) ++t.road, t.painted += cell.runs > 0;
-  return t;
+  return t.road > 0 ? double(t.painted) / t.road : 0.0;
 }
 
 CrossingEvidence::Tally CrossingEvidence::tallyIn(const Outline& outline, Place place) const {
@@ -139,8 +139,7 @@ double CrossingEvidence::evidence(const Tally& t, double asphaltShare) const {
 }
 
 std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
-  const Tally road = asphalt();
-  const double share = road.road > 0 ? double(road.painted) / road.road : 0.0;
+  const double share = asphaltShare();
   std::vector<CrossingVerdict> out;
   for (const Crossing& c : crossings_) {
     CrossingVerdict v = c.verdict;
@@ -164,18 +163,16 @@ std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
 }
 
 std::vector<MissingCrossing> CrossingEvidence::missing() const {
-  const Tally road = asphalt();
-  if (road.road == 0) return {};
-  const double share = double(road.painted) / road.road;
+  const double share = asphaltShare();
   const double d = options_.crossingDepth, w = options_.crossingWidth;
   struct Candidate {
     Vec2 centre, along;
     double evidence;
   };
   std::vector<Candidate> candidates;
-  std::unordered_map<int64_t, bool> tried;  // one candidate per metre square
+  std::unordered_set<int64_t> tried;  // one candidate per metre square
   for (const StrayRun& s : stray_) {
-    if (!tried.try_emplace((int64_t(std::floor(s.city.x())) << 32) ^ (int64_t(std::floor(s.city.y())) & 0xffffffff), true).second) continue;
+    if (!tried.insert((int64_t(std::floor(s.city.x())) << 32) ^ (int64_t(std::floor(s.city.y())) & 0xffffffff)).second) continue;
     const std::optional<Vec2> along = lines_.directionAt(s.city, 15.0);
     if (!along) continue;
     // Painted at both edges (a crossing's edge lines or its stripes' ends; a stop line has one), not in the flanks.

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <Eigen/Core>
@@ -76,8 +77,8 @@ class CrossingEvidence {
   struct Tally {
     int road = 0, painted = 0;
   };
-  // Cells of the log's road off the map's paint: seen, and painted.
-  Tally asphalt() const;
+  // The share of the log's road cells off the map's paint that are painted (0 when none is seen).
+  double asphaltShare() const;
   Tally tallyIn(const std::vector<Eigen::Vector2d>& outline, Place place) const;
   // Road cells (Place::Road) in a rectangle: u along `along` from u0 to u1, v across from v0 to v1, about `centre`.
   Tally tallyInBand(const Eigen::Vector2d& centre, const Eigen::Vector2d& along, double u0, double u1, double v0, double v1) const;

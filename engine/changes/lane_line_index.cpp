@@ -1,7 +1,8 @@
 #include "engine/changes/lane_line_index.h"
 
-#include <algorithm>
 #include <cmath>
+
+#include "engine/geom/polygon2d.h"
 
 namespace hdprior {
 
@@ -10,12 +11,6 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 
 int64_t bucketKey(int64_t col, int64_t row) { return (col << 32) ^ (row & 0xffffffff); }
-
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-12), 0.0, 1.0);
-  return (a + t * d - p).norm();
-}
 
 }  // namespace
 
@@ -47,7 +42,7 @@ void LaneLineIndex::forSegmentsNear(const Vec2& city, double reach, Visit&& visi
 
 bool LaneLineIndex::nearPainted(const Vec2& city, double reach) const {
   bool near = false;
-  forSegmentsNear(city, reach, [&](const Segment& s) { near = near || (s.painted && segmentDistance(city, s.a, s.b) <= reach); });
+  forSegmentsNear(city, reach, [&](const Segment& s) { near = near || (s.painted && segmentDistance(city, city, s.a, s.b) <= reach); });
   return near;
 }
 
@@ -55,7 +50,7 @@ std::optional<Vec2> LaneLineIndex::directionAt(const Vec2& city, double reach) c
   double best = reach;
   std::optional<Vec2> direction;
   forSegmentsNear(city, reach, [&](const Segment& s) {
-    const double d = segmentDistance(city, s.a, s.b);
+    const double d = segmentDistance(city, city, s.a, s.b);
     if (d <= best) best = d, direction = (s.b - s.a).normalized();
   });
   return direction;
