@@ -54,9 +54,10 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
   }
   for (const LaneLineStretch& s : report.laneLines) {
     if (s.verdict != MapVerdict::Contradicted || s.bestFrame < 0) continue;
-    char b[200];
-    std::snprintf(b, sizeof b, "lane %lld %s line: paint %.1f m to its %s, none on it (%d runs, confidence %.2f)", (long long)s.laneId,
-                  s.side.c_str(), std::abs(s.offset), s.offset > 0 ? "left" : "right", s.runsAtOffset, s.confidence);
+    char b[240];
+    std::snprintf(b, sizeof b, "lane %lld %s line: paint %.1f m to its %s (%d of %d road cells), as little on it as on the asphalt (%d of %d; confidence %.2f)",
+                  (long long)s.laneId, s.side.c_str(), std::abs(s.offset), s.offset > 0 ? "left" : "right", s.atOffset.painted, s.atOffset.road,
+                  s.onLine.painted, s.onLine.road, s.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(s.bestFrame), b});
   }
   std::stable_sort(events.begin(), events.end(), [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });

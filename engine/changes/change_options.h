@@ -43,7 +43,11 @@ struct ChangeOptions {
   double paintLineReach = 1.0;
   // Lane lines: paint on them stands out within this range on the real sweeps.
   double laneRange = 8.0;
-  int laneOffsetRuns = 4;  // paint runs 0.75-1.5 m beside a line, none on it, make the line contradicted
+  // A painted line's share of painted cells against the asphalt's: a line crosses a fraction of
+  // the cells along it and dashes cover a quarter of it (on the tuning family, lines read 1.6-4x).
+  double laneLineContrast = 2.0;
+  double laneLineEvidence = 2.0;  // log-likelihood ratio of paint, on the line (consistent) or beside it
+  double laneLineAsphalt = 1.0;   // ... and of asphalt on the line, for it to be contradicted
 };
 
 }  // namespace hdprior

@@ -90,8 +90,11 @@ json crossingFeature(const CrossingVerdict& c) {
 
 json laneLineFeature(const LaneLineStretch& s) {
   json evidence = {{"kind", s.verdict == MapVerdict::Contradicted ? "paint_beside_line" : "paint_on_line"},
-                   {"runs_on_line", s.runsOnLine}};
-  if (s.verdict == MapVerdict::Contradicted) evidence["offset_m"] = number(s.offset), evidence["runs_at_offset"] = s.runsAtOffset;
+                   {"road_cells_on_line", s.onLine.road},
+                   {"paint_cells_on_line", s.onLine.painted},
+                   {"asphalt_paint_share", number(s.asphaltShare)}};
+  if (s.verdict == MapVerdict::Contradicted)
+    evidence["offset_m"] = number(s.offset), evidence["road_cells_at_offset"] = s.atOffset.road, evidence["paint_cells_at_offset"] = s.atOffset.painted;
   json properties = {{"element", "lane_boundary"},
                      {"id", s.laneId},
                      {"side", s.side},

@@ -28,7 +28,8 @@ std::pair<int, int> firstAndBestFrame(std::vector<int> frames) {
 
 }  // namespace
 
-CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options), lines_(map) {
+CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& options)
+    : options_(options), lines_(map), cells_(options.paintCell) {
   for (const PedestrianCrossing& c : map.pedestrianCrossings) {
     if (c.edge1.size() < 2 || c.edge2.size() < 2) continue;
     Crossing crossing;
@@ -42,22 +43,17 @@ CrossingEvidence::CrossingEvidence(const VectorMap& map, const ChangeOptions& op
   }
 }
 
-int64_t CrossingEvidence::keyOf(const Vec2& city) const {
-  const int64_t col = int64_t(std::floor(city.x() / options_.paintCell)), row = int64_t(std::floor(city.y() / options_.paintCell));
-  return (col << 32) ^ (row & 0xffffffff);
-}
-
-CrossingEvidence::Cell& CrossingEvidence::cellAt(const Vec2& city) {
-  const auto [it, inserted] = cells_.try_emplace(keyOf(city));
+PaintCell& CrossingEvidence::cellAt(const Vec2& city) {
+  const auto [cell, inserted] = cells_.at(city);
   if (inserted) {
-    const Vec2 centre = ((city / options_.paintCell).array().floor() + 0.5) * options_.paintCell;
-    if (lines_.nearPainted(centre, options_.paintLineReach)) it->second.place = Place::PaintedLine;
+    const Vec2 centre = cells_.centreOf(city);
+    if (lines_.nearPainted(centre, options_.paintLineReach)) cell.place = uint8_t(Place::PaintedLine);
     else
       for (const Crossing& c : crossings_)
         if ((centre.array() >= c.lo.array()).all() && (centre.array() <= c.hi.array()).all() && ringContains(c.explains, centre))
-          it->second.place = Place::Crossing;
+          cell.place = uint8_t(Place::Crossing);
   }
-  return it->second;
+  return cell;
 }
 
 void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTEgo) {
@@ -69,10 +65,10 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
   for (const Vec2& p : road) ++cellAt(p).road;
   std::vector<Place> places;
   for (const Vec2& p : runs) {
-    Cell& cell = cellAt(p);
+    PaintCell& cell = cellAt(p);
     ++cell.runs;
-    places.push_back(cell.place);
-    if (cell.place == Place::Road) stray_.push_back({p, frame});
+    places.push_back(Place(cell.place));
+    if (Place(cell.place) == Place::Road) stray_.push_back({p, frame});
   }
 
   for (Crossing& c : crossings_) {
@@ -93,49 +89,42 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
 }
 
 double CrossingEvidence::asphaltShare() const {
-  Tally t;
-  for (const auto& [key, cell] : cells_)
-    if (cell.place == Place::Road && cell.road > 0) ++t.road, t.painted += cell.runs > 0;
+  PaintTally t;
+  cells_.forEach([&](const Vec2&, const PaintCell& cell) {
+    if (Place(cell.place) == Place::Road) t.add(cell);
+  });
   return t.road > 0 ? double(t.painted) / t.road : 0.0;
 }
 
-CrossingEvidence::Tally CrossingEvidence::tallyIn(const Outline& outline, Place place) const {
+PaintTally CrossingEvidence::tallyIn(const Outline& outline, Place place) const {
   Vec2 lo = outline.front(), hi = outline.front();
   for (const Vec2& p : outline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double s = options_.paintCell;
-  Tally t;
+  PaintTally t;
   for (double x = (std::floor(lo.x() / s) + 0.5) * s; x <= hi.x(); x += s)
     for (double y = (std::floor(lo.y() / s) + 0.5) * s; y <= hi.y(); y += s) {
       if (!ringContains(outline, {x, y})) continue;
-      const auto it = cells_.find(keyOf({x, y}));
-      if (it == cells_.end() || it->second.place != place || it->second.road == 0) continue;
-      ++t.road;
-      t.painted += it->second.runs > 0;
+      const PaintCell* cell = cells_.find({x, y});
+      if (cell && Place(cell->place) == place) t.add(*cell);
     }
   return t;
 }
 
-CrossingEvidence::Tally CrossingEvidence::tallyInBand(const Vec2& centre, const Vec2& along, double u0, double u1, double v0,
-                                                      double v1) const {
+PaintTally CrossingEvidence::tallyInBand(const Vec2& centre, const Vec2& along, double u0, double u1, double v0, double v1) const {
   const Vec2 across(-along.y(), along.x());
   const double s = options_.paintCell;
-  Tally t;
+  PaintTally t;
   for (double u = u0 + s / 2; u < u1; u += s)
     for (double v = v0 + s / 2; v < v1; v += s) {
-      const auto it = cells_.find(keyOf(centre + u * along + v * across));
-      if (it == cells_.end() || it->second.place != Place::Road || it->second.road == 0) continue;
-      ++t.road;
-      t.painted += it->second.runs > 0;
+      const PaintCell* cell = cells_.find(centre + u * along + v * across);
+      if (cell && Place(cell->place) == Place::Road) t.add(*cell);
     }
   return t;
 }
 
-// Log-likelihood ratio of a tally's painted cells: a painted crossing (options.crossingContrast
-// times the asphalt's share, at least options.crossingPaintShare) against the asphalt.
-double CrossingEvidence::evidence(const Tally& t, double asphaltShare) const {
-  const double s0 = std::clamp(asphaltShare, 0.005, 0.5);
-  const double s1 = std::min(0.95, std::max(options_.crossingContrast * s0, options_.crossingPaintShare));
-  return t.painted * std::log(s1 / s0) + (t.road - t.painted) * std::log((1.0 - s1) / (1.0 - s0));
+// Log-likelihood ratio of a tally's painted cells: a painted crossing against the asphalt.
+double CrossingEvidence::evidence(const PaintTally& t, double asphaltShare) const {
+  return paintEvidence(t, asphaltShare, options_.crossingContrast, options_.crossingPaintShare);
 }
 
 std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
@@ -143,7 +132,7 @@ std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
   std::vector<CrossingVerdict> out;
   for (const Crossing& c : crossings_) {
     CrossingVerdict v = c.verdict;
-    const Tally t = tallyIn(c.reach, Place::Crossing);
+    const PaintTally t = tallyIn(c.reach, Place::Crossing);
     v.roadCells = t.road;
     v.paintCells = t.painted;
     v.asphaltShare = share;
@@ -176,15 +165,15 @@ std::vector<MissingCrossing> CrossingEvidence::missing() const {
     const std::optional<Vec2> along = lines_.directionAt(s.city, 15.0);
     if (!along) continue;
     // Painted at both edges (a crossing's edge lines or its stripes' ends; a stop line has one), not in the flanks.
-    const Tally near = tallyInBand(s.city, *along, -d / 2, -d / 6, -w / 2, w / 2), middle = tallyInBand(s.city, *along, -d / 6, d / 6, -w / 2, w / 2),
+    const PaintTally near = tallyInBand(s.city, *along, -d / 2, -d / 6, -w / 2, w / 2), middle = tallyInBand(s.city, *along, -d / 6, d / 6, -w / 2, w / 2),
                 far = tallyInBand(s.city, *along, d / 6, d / 2, -w / 2, w / 2);
     if (evidence(near, share) <= 0.0 || evidence(far, share) <= 0.0) continue;
-    const Tally band{near.road + middle.road + far.road, near.painted + middle.painted + far.painted};
+    const PaintTally band{near.road + middle.road + far.road, near.painted + middle.painted + far.painted};
     // A band seen over less than a third of it is a glimpse.
     if (band.road < d * w / (3.0 * options_.paintCell * options_.paintCell)) continue;
     const double e = evidence(band, share);
     if (e < options_.missingCrossingEvidence) continue;
-    const Tally before = tallyInBand(s.city, *along, -1.5 * d - 1.0, -d / 2 - 1.0, -w / 2, w / 2),
+    const PaintTally before = tallyInBand(s.city, *along, -1.5 * d - 1.0, -d / 2 - 1.0, -w / 2, w / 2),
                 after = tallyInBand(s.city, *along, d / 2 + 1.0, 1.5 * d + 1.0, -w / 2, w / 2);
     if (evidence({before.road + after.road, before.painted + after.painted}, share) > 0.0) continue;
     candidates.push_back({s.city, *along, e});
@@ -198,7 +187,7 @@ std::vector<MissingCrossing> CrossingEvidence::missing() const {
     // Across the lanes as far as metre-wide slices of the band stay painted like a crossing (or
     // are a painted lane line's).
     const auto painted = [&](double v0, double v1) {
-      const Tally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, v0, v1);
+      const PaintTally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, v0, v1);
       return (t.road == 0 && lines_.nearPainted(c.centre + (v0 + v1) / 2 * Vec2(-c.along.y(), c.along.x()), options_.paintLineReach)) ||
              evidence(t, share) > 0.0;
     };
@@ -209,7 +198,7 @@ std::vector<MissingCrossing> CrossingEvidence::missing() const {
     const auto at = [&](double u, double v) { return Vec2(c.centre + u * c.along + v * across); };
     MissingCrossing m;
     m.outline = {at(-d / 2, lo), at(d / 2, lo), at(d / 2, hi), at(-d / 2, hi)};
-    const Tally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, lo, hi);
+    const PaintTally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, lo, hi);
     m.roadCells = t.road;
     m.paintCells = t.painted;
     m.confidence = confidenceOf(evidence(t, share));

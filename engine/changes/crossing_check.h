@@ -1,6 +1,5 @@
 #pragma once
 #include <cstdint>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -9,6 +8,7 @@
 #include "engine/changes/change_options.h"
 #include "engine/changes/lane_line_index.h"
 #include "engine/changes/map_verdict.h"
+#include "engine/changes/paint_cells.h"
 #include "engine/changes/sweep_paint.h"
 #include "engine/geom/se3.h"
 #include "engine/io/vector_map.h"
@@ -56,13 +56,11 @@ class CrossingEvidence {
 
   std::vector<CrossingVerdict> verdicts() const;
   std::vector<MissingCrossing> missing() const;
+  // The share of the log's road cells off the map's paint that are painted (0 when none is seen).
+  double asphaltShare() const;
 
  private:
-  enum class Place : uint8_t { Road, PaintedLine, Crossing };
-  struct Cell {
-    int road = 0, runs = 0;
-    Place place = Place::Road;
-  };
+  enum class Place : uint8_t { Road, PaintedLine, Crossing };  // a PaintCell's place
   struct Crossing {
     CrossingVerdict verdict;
     std::vector<Eigen::Vector2d> reach;     // the outline grown by half a metre: paint at the mapped edge counts
@@ -74,23 +72,17 @@ class CrossingEvidence {
     Eigen::Vector2d city;
     int frame;
   };
-  struct Tally {
-    int road = 0, painted = 0;
-  };
-  // The share of the log's road cells off the map's paint that are painted (0 when none is seen).
-  double asphaltShare() const;
-  Tally tallyIn(const std::vector<Eigen::Vector2d>& outline, Place place) const;
+  PaintCell& cellAt(const Eigen::Vector2d& city);
+  PaintTally tallyIn(const std::vector<Eigen::Vector2d>& outline, Place place) const;
   // Road cells (Place::Road) in a rectangle: u along `along` from u0 to u1, v across from v0 to v1, about `centre`.
-  Tally tallyInBand(const Eigen::Vector2d& centre, const Eigen::Vector2d& along, double u0, double u1, double v0, double v1) const;
-  double evidence(const Tally& t, double asphaltShare) const;
-  Cell& cellAt(const Eigen::Vector2d& city);
-  int64_t keyOf(const Eigen::Vector2d& city) const;
+  PaintTally tallyInBand(const Eigen::Vector2d& centre, const Eigen::Vector2d& along, double u0, double u1, double v0, double v1) const;
+  double evidence(const PaintTally& t, double asphaltShare) const;
 
   ChangeOptions options_;
   LaneLineIndex lines_;
   std::vector<Crossing> crossings_;
   std::vector<StrayRun> stray_;
-  std::unordered_map<int64_t, Cell> cells_;
+  PaintCells cells_;
 };
 
 }  // namespace hdprior

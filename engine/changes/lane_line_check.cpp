@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -17,7 +19,7 @@ using Vec2 = Eigen::Vector2d;
 
 constexpr double kCell = 5.0;       // metres, of the index of stretches
 constexpr double kBin = 0.25;       // metres, of the offset histogram
-constexpr double kReach = 1.5;      // metres beside a line that its stretch reads
+constexpr double kReach = 2.0;      // metres beside a line that its stretch reads
 constexpr double kOnLine = 0.5;     // paint this near the line is the line's
 constexpr double kMinOffset = 0.75; // paint nearer than this may be the line seen through a pose error
 
@@ -62,7 +64,8 @@ std::optional<double> leftOffset(const std::vector<Vec2>& line, const Vec2& p) {
 
 }  // namespace
 
-LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& options) : options_(options) {
+LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& options)
+    : options_(options), paint_(options.paintCell) {
   std::set<LaneLineKey> seen;
   for (const LaneSegment& lane : map.laneSegments)
     for (const auto& [line, type, side] : {std::tuple{&lane.leftLaneBoundary, &lane.leftLaneMarkType, "left"},
@@ -92,14 +95,15 @@ LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& op
 void LaneLineEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTEgo) {
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(yawOf(cityTEgo)).toRotationMatrix();
   const Vec2 t = cityTEgo.translation().head<2>();
-  std::vector<std::pair<size_t, double>> beside;  // each run's nearest stretch and its offset to it
+  std::vector<std::pair<Vec2, std::optional<size_t>>> runs;  // each run in the city and the stretch it is beside
   int on = 0, off = 0;
   std::set<std::pair<int64_t, std::string>> offLines;  // the lines with paint beside them
   for (const PaintRun& run : paint.runs) {
     if (run.centre.norm() > options_.laneRange) continue;
-    const std::optional<std::pair<size_t, double>> b = nearestStretch(r * run.centre + t);
+    const Vec2 city = r * run.centre + t;
+    const std::optional<std::pair<size_t, double>> b = nearestStretch(city);
+    runs.push_back({city, b ? std::optional<size_t>(b->first) : std::nullopt});
     if (!b) continue;
-    beside.push_back(*b);
     on += std::abs(b->second) < kOnLine;
     if (std::abs(b->second) >= kMinOffset) {
       ++off;
@@ -111,7 +115,12 @@ void LaneLineEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
     ++misalignedFrames_;
     return;
   }
-  for (const auto& [k, offset] : beside) addRun(frame, stretches_[k], offset);
+  for (const Vec2& p : paint.road)
+    if (p.norm() <= options_.laneRange) ++paint_.at(r * p + t).first.road;
+  for (const auto& [city, stretch] : runs) {
+    ++paint_.at(city).first.runs;
+    if (stretch) addRun(frame, stretches_[*stretch]);
+  }
 }
 
 std::optional<std::pair<size_t, double>> LaneLineEvidence::nearestStretch(const Vec2& city) const {
@@ -127,38 +136,67 @@ std::optional<std::pair<size_t, double>> LaneLineEvidence::nearestStretch(const 
   return best;
 }
 
-void LaneLineEvidence::addRun(int frame, Stretch& s, double offset) {
-  ++s.runs[std::clamp(int(std::floor((offset + kReach) / kBin)), 0, kBins - 1)];
+void LaneLineEvidence::addRun(int frame, Stretch& s) {
   if (s.judged.firstFrame < 0) s.judged.firstFrame = frame;
   s.frameRuns = s.lastFrame == frame ? s.frameRuns + 1 : 1;
   s.lastFrame = frame;
   if (s.frameRuns > s.bestRuns) s.bestRuns = s.frameRuns, s.judged.bestFrame = frame;
 }
 
-std::vector<LaneLineStretch> LaneLineEvidence::stretches() const {
+std::vector<LaneLineEvidence::Profile> LaneLineEvidence::profiles() const {
+  std::vector<Profile> out(stretches_.size());
+  paint_.forEach([&](const Vec2& centre, const PaintCell& cell) {
+    if (cell.road == 0) return;
+    const std::optional<std::pair<size_t, double>> b = nearestStretch(centre);
+    if (b) out[b->first][std::clamp(int(std::floor((b->second + kReach) / kBin)), 0, kBins - 1)].add(cell);
+  });
+  return out;
+}
+
+std::vector<LaneLineStretch> LaneLineEvidence::stretches(double asphaltShare) const {
+  const std::vector<Profile> profile = profiles();
+  // A line is judged whole: a stretch shows a few painted cells, too few to tell paint from asphalt.
+  std::map<std::pair<int64_t, std::string>, Profile> lines;
+  for (size_t k = 0; k < stretches_.size(); ++k) {
+    Profile& line = lines[{stretches_[k].judged.laneId, stretches_[k].judged.side}];
+    for (int b = 0; b < kBins; ++b) line[b].road += profile[k][b].road, line[b].painted += profile[k][b].painted;
+  }
   std::vector<LaneLineStretch> out;
-  for (const Stretch& s : stretches_) {
-    if (s.judged.firstFrame < 0) continue;
-    LaneLineStretch j = s.judged;
-    const auto centreOf = [](int bin) { return -kReach + (bin + 0.5) * kBin; };
-    for (int b = 0; b < kBins; ++b) j.runsOnLine += std::abs(centreOf(b)) < kOnLine ? s.runs[b] : 0;
-    // The busiest half metre (two bins) wholly beyond kMinOffset.
-    for (int b = 0; b + 1 < kBins; ++b) {
-      const double lo = centreOf(b) - kBin / 2, hi = centreOf(b + 1) + kBin / 2;
-      if (lo * hi <= 0.0 || std::min(std::abs(lo), std::abs(hi)) < kMinOffset) continue;
-      const int runs = s.runs[b] + s.runs[b + 1];
-      if (runs > j.runsAtOffset) j.runsAtOffset = runs, j.offset = (s.runs[b] * centreOf(b) + s.runs[b + 1] * centreOf(b + 1)) / runs;
-    }
-    if (j.runsOnLine > 0) {
-      j.verdict = MapVerdict::Consistent;
-      j.confidence = 1.0 - std::exp(-double(j.runsOnLine) / 2.0);
-    } else if (j.runsAtOffset >= options_.laneOffsetRuns) {
-      j.verdict = MapVerdict::Contradicted;
-      j.confidence = 1.0 - std::exp(-double(j.runsAtOffset) / double(options_.laneOffsetRuns));
-    }
+  for (size_t k = 0; k < stretches_.size(); ++k) {
+    if (std::none_of(profile[k].begin(), profile[k].end(), [](const PaintTally& t) { return t.road > 0; })) continue;
+    LaneLineStretch j = stretches_[k].judged;
+    judge(lines.at({j.laneId, j.side}), asphaltShare, j);
     out.push_back(std::move(j));
   }
   return out;
+}
+
+void LaneLineEvidence::judge(const Profile& line, double asphaltShare, LaneLineStretch& j) const {
+  j.asphaltShare = asphaltShare;
+  const auto window = [&](int b) { return PaintTally{line[b].road + line[b + 1].road, line[b].painted + line[b + 1].painted}; };
+  const auto evidence = [&](const PaintTally& t) { return paintEvidence(t, asphaltShare, options_.laneLineContrast, 0.0); };
+  j.onLine = window(kBins / 2 - 1);
+  // The most painted half metre centred kMinOffset or more beside the line.
+  double beside = -std::numeric_limits<double>::infinity();
+  for (int b = 0; b + 1 < kBins; ++b) {
+    const double centre = -kReach + (b + 1) * kBin;
+    if (std::abs(centre) < kMinOffset) continue;
+    const double e = evidence(window(b));
+    if (e > beside) {
+      beside = e;
+      j.atOffset = window(b);
+      const double lo = centre - kBin / 2, hi = centre + kBin / 2;  // the two bins' centres
+      j.offset = j.atOffset.painted > 0 ? (line[b].painted * lo + line[b + 1].painted * hi) / j.atOffset.painted : centre;
+    }
+  }
+  const double on = evidence(j.onLine);
+  if (on >= options_.laneLineEvidence) {
+    j.verdict = MapVerdict::Consistent;
+    j.confidence = 1.0 / (1.0 + std::exp(-on));
+  } else if (beside >= options_.laneLineEvidence && on <= -options_.laneLineAsphalt) {
+    j.verdict = MapVerdict::Contradicted;
+    j.confidence = 1.0 / (1.0 + std::exp(-std::min(beside, -on)));
+  }
 }
 
 }  // namespace hdprior

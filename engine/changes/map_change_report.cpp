@@ -118,7 +118,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   MapChangeReport report = judgeMapChanges(std::move(evidence), map, options);
   report.crossings = crossings.verdicts();
   report.missingCrossings = crossings.missing();
-  report.laneLines = laneLines.stretches();
+  report.laneLines = laneLines.stretches(crossings.asphaltShare());
   report.frames = frames;
   report.drivenKm = drivenM / 1000.0;
   return report;

@@ -183,8 +183,16 @@ TEST(ChangesCommandReal, TheRealSweepAgreesWithItsMap) {
             e["paint_cells"].get<double>() > 1.2 * e["asphalt_paint_share"].get<double>() * e["road_cells"].get<double>();
   }
   EXPECT_TRUE(ahead) << "crossing 2356430: no more paint than the asphalt's";
-  // Its lane paint within 8 m lies on the map's lines.
-  EXPECT_GE(s["lane_line_stretches"]["consistent"].get<int>(), 2) << s.dump();
+  // The lane lines within 8 m: the sweep's few rings there cross them in a handful of road cells
+  // (2-5 per quarter metre beside a line), too few for a verdict either way.
+  int laneCells = 0;
+  for (const nlohmann::json& f : geo["features"]) {
+    const nlohmann::json& p = f["properties"];
+    if (p["element"] != "lane_boundary") continue;
+    EXPECT_EQ(p["verdict"], "unobserved") << p.dump();
+    laneCells += p["evidence"]["road_cells_on_line"].get<int>();
+  }
+  EXPECT_GE(laneCells, 5);
   EXPECT_EQ(s["lane_line_stretches"]["contradicted"].get<int>(), 0) << s.dump();
 }
 

@@ -1,5 +1,7 @@
-// Lane lines judged by the paint runs beside them: on the line, beside it, too near to tell, in a
-// crossing; a boundary two lanes share is one line; unpainted boundaries are not read.
+// Lane lines judged by the painted cells beside them against the asphalt's share: paint on the
+// line, beside it, too near to tell, too little to tell, in a crossing; a line is judged whole; a
+// boundary two lanes share is one line; unpainted boundaries are not read; a sweep whose paint is
+// beside every line is off its pose.
 #include "engine/changes/lane_line_check.h"
 
 #include <gtest/gtest.h>
@@ -7,7 +9,7 @@
 namespace hdprior {
 namespace {
 
-using Vec2 = Eigen::Vector2d;
+constexpr double kAsphalt = 0.05;  // the log's share of painted cells off the map's paint
 
 // Two lanes along x from 0 to 25 m: the dashed line between them at y = 0 (the first lane's left,
 // the second's right, drawn the other way), a solid line on the first lane's right (y = -3.5), the
@@ -28,92 +30,109 @@ VectorMap twoLanes() {
   return map;
 }
 
-// Paint runs along y = `y` from x0 to x1 every half metre, in the sweep of a sensor at (x0, 0).
-SweepPaint runsAlong(double y, double x0, double x1) {
-  SweepPaint paint;
-  for (double x = x0; x <= x1; x += 0.5) paint.runs.push_back({{x - x0, y}, 4});
-  return paint;
-}
-
 SE3 at(double x) {
   SE3 pose = SE3::Identity();
   pose.translation().x() = x;
   return pose;
 }
 
-TEST(LaneLineCheck, ASharedLineIsOneLineCutIntoStretchesAndUnpaintedOnesAreNotRead) {
-  LaneLineEvidence evidence(twoLanes(), ChangeOptions{});
-  evidence.add(0, runsAlong(0.05, 0.0, 7.5), at(0.0));
-  evidence.add(1, runsAlong(0.05, 12.0, 19.5), at(12.0));
-  evidence.add(2, runsAlong(3.5, 22.0, 24.5), at(22.0));  // on the unpainted boundary: read as nothing's
-  const std::vector<LaneLineStretch> s = evidence.stretches();
-  ASSERT_EQ(s.size(), 2u) << "stretches 0 and 1 of the one white line: the third saw no run";
-  for (const LaneLineStretch& x : s) {
-    EXPECT_EQ(x.laneId, 1);
-    EXPECT_EQ(x.side, "left");
-    EXPECT_EQ(x.markType, "DASHED_WHITE");
-    EXPECT_EQ(x.verdict, MapVerdict::Consistent);
-  }
-  EXPECT_EQ(s[0].index, 0);
-  EXPECT_EQ(s[1].index, 1);
-  EXPECT_EQ(s[0].bestFrame, 0);
-  EXPECT_EQ(s[1].bestFrame, 1);
+// The road within 7 m ahead of a sensor, from y = -5.5 to 5.5, a point in every 0.25 m cell, and
+// paint runs in every cell along y = `y` for each y of `lines` (ego frame: the sensor at the origin).
+SweepPaint sweep(std::initializer_list<double> lines, double length = 7.0) {
+  SweepPaint paint;
+  for (double x = 0.125; x < length; x += 0.25)
+    for (double y = -5.375; y < 5.5; y += 0.25) paint.road.push_back({x, y});
+  for (double y : lines)
+    for (double x = 0.125; x < length; x += 0.25) paint.runs.push_back({{x, y}, 4});
+  return paint;
 }
 
-// The dashed line's paint 1.2 m to its left while the solid line's is on it: the map drew the
-// dashed line in the wrong place. All paint 1.2 m off: the pose is, and the sweep is left out.
-// So is a sweep that sees one line, all of it beside it.
-TEST(LaneLineCheck, PaintBesideOneLineAndNoneOnItContradictsIt) {
+// Sweeps every 7 m from x = 0 to 21: the whole 25 m of road ahead seen once.
+void drive(LaneLineEvidence& evidence, std::initializer_list<double> lines) {
+  for (int k = 0; k < 4; ++k) evidence.add(k, sweep(lines, k == 3 ? 4.0 : 7.0), at(7.0 * k));
+}
+
+const LaneLineStretch& ofLine(const std::vector<LaneLineStretch>& s, const std::string& mark) {
+  for (const LaneLineStretch& x : s)
+    if (x.markType == mark) return x;
+  throw std::runtime_error("no stretch of " + mark);
+}
+
+TEST(LaneLineCheck, PaintOnTheLinesMakesThemConsistentAndASharedLineIsOneLine) {
   LaneLineEvidence evidence(twoLanes(), ChangeOptions{});
-  SweepPaint paint = runsAlong(1.2, 0.0, 6.5);  // every run within 8 m of the sensor
-  const SweepPaint solid = runsAlong(-3.45, 0.0, 6.5);
-  paint.runs.insert(paint.runs.end(), solid.runs.begin(), solid.runs.end());
-  evidence.add(4, paint, at(0.0));
-  std::vector<LaneLineStretch> s = evidence.stretches();
-  ASSERT_EQ(s.size(), 2u);
-  const LaneLineStretch& dashed = s[0].markType == "DASHED_WHITE" ? s[0] : s[1];
-  const LaneLineStretch& solidLine = s[0].markType == "DASHED_WHITE" ? s[1] : s[0];
-  EXPECT_EQ(solidLine.verdict, MapVerdict::Consistent);
-  EXPECT_EQ(dashed.verdict, MapVerdict::Contradicted);
-  EXPECT_NEAR(dashed.offset, 1.2, 0.15) << "to the line's left (it runs along +x)";
-  EXPECT_EQ(dashed.runsOnLine, 0);
-  EXPECT_EQ(dashed.runsAtOffset, 14);
-  EXPECT_GT(dashed.confidence, 0.9);
-  EXPECT_EQ(dashed.bestFrame, 4);
+  drive(evidence, {0.1, -3.4});
+  const std::vector<LaneLineStretch> s = evidence.stretches(kAsphalt);
+  ASSERT_EQ(s.size(), 6u) << "three stretches of each painted line; the unpainted boundary is not read";
+  int dashed = 0;
+  for (const LaneLineStretch& x : s) {
+    EXPECT_EQ(x.laneId, 1);
+    EXPECT_EQ(x.verdict, MapVerdict::Consistent) << x.markType << " " << x.index;
+    EXPECT_GT(x.confidence, 0.99);
+    EXPECT_GT(x.onLine.painted, 0.4 * x.onLine.road) << "the whole line's: its paint fills one of the two bins";
+    if (x.markType != "DASHED_WHITE") continue;
+    EXPECT_EQ(x.side, "left");
+    EXPECT_EQ(x.index, dashed++);
+  }
+  EXPECT_EQ(dashed, 3);
+  EXPECT_EQ(s[0].bestFrame, 0);
+  EXPECT_EQ(ofLine(s, "DASHED_WHITE").asphaltShare, kAsphalt);
+}
+
+// The dashed line's paint 1.1 m to its left while the solid line's is on it: the map drew the
+// dashed line in the wrong place, over its whole length. All paint 1.1 m off: the pose is, and the
+// sweep is left out. So is a sweep that sees one line, all of it beside it.
+TEST(LaneLineCheck, PaintBesideOneLineAndNoneOnItContradictsTheWholeLine) {
+  LaneLineEvidence evidence(twoLanes(), ChangeOptions{});
+  drive(evidence, {1.1, -3.45});
+  const std::vector<LaneLineStretch> s = evidence.stretches(kAsphalt);
+  EXPECT_EQ(ofLine(s, "SOLID_WHITE").verdict, MapVerdict::Consistent);
+  int contradicted = 0;
+  for (const LaneLineStretch& x : s) {
+    if (x.markType != "DASHED_WHITE") continue;
+    ++contradicted;
+    EXPECT_EQ(x.verdict, MapVerdict::Contradicted);
+    EXPECT_NEAR(x.offset, 1.1, 0.15) << "to the line's left (it runs along +x)";
+    EXPECT_EQ(x.onLine.painted, 0);
+    EXPECT_GT(x.atOffset.painted, 40);
+    EXPECT_GT(x.confidence, 0.9);
+  }
+  EXPECT_EQ(contradicted, 3);
   EXPECT_EQ(evidence.misalignedFrames(), 0);
 
   LaneLineEvidence shifted(twoLanes(), ChangeOptions{});
-  SweepPaint both = runsAlong(1.2, 0.0, 6.5);
-  const SweepPaint solidShifted = runsAlong(-2.3, 0.0, 6.5);
-  both.runs.insert(both.runs.end(), solidShifted.runs.begin(), solidShifted.runs.end());
-  shifted.add(0, both, at(0.0));
-  EXPECT_TRUE(shifted.stretches().empty());
-  EXPECT_EQ(shifted.misalignedFrames(), 1);
+  drive(shifted, {1.1, -2.4});
+  EXPECT_TRUE(shifted.stretches(kAsphalt).empty());
+  EXPECT_EQ(shifted.misalignedFrames(), 4);
 
   // One line's paint beside it, more runs than the other line shows on it: a restriping moves one
   // line, a pose error every line in view, so the sweep counts. Alone in view, it cannot tell.
   LaneLineEvidence restriped(twoLanes(), ChangeOptions{});
-  SweepPaint most = runsAlong(1.2, 0.0, 6.5);
-  const SweepPaint glimpse = runsAlong(-3.45, 0.0, 1.0);
-  most.runs.insert(most.runs.end(), glimpse.runs.begin(), glimpse.runs.end());
+  SweepPaint most = sweep({1.1});
+  for (double x = 0.125; x < 2.0; x += 0.25) most.runs.push_back({{x, -3.45}, 4});
   restriped.add(0, most, at(0.0));
   EXPECT_EQ(restriped.misalignedFrames(), 0);
-  restriped.add(1, runsAlong(1.2, 0.0, 6.5), at(0.0));
+  restriped.add(1, sweep({1.1}), at(0.0));
   EXPECT_EQ(restriped.misalignedFrames(), 1);
 }
 
-TEST(LaneLineCheck, PaintHalfAMetreOffOrBesideARunOnTheLineDoesNotContradictIt) {
+// Paint a third of a metre off (a pose error) neither contradicts a line nor shows it; paint on the
+// line and beside it is the line's; a few painted cells are too few to tell paint from asphalt.
+TEST(LaneLineCheck, PaintNearTheLineOrBesideItsOwnPaintOrTooLittleDoesNotContradictIt) {
   LaneLineEvidence nearby(twoLanes(), ChangeOptions{});
-  nearby.add(0, runsAlong(-0.6, 0.0, 7.5), at(0.0));  // a pose half a metre off
-  ASSERT_EQ(nearby.stretches().size(), 1u);
-  EXPECT_EQ(nearby.stretches()[0].verdict, MapVerdict::Unobserved);
+  drive(nearby, {-0.35, -3.45});
+  EXPECT_EQ(ofLine(nearby.stretches(kAsphalt), "DASHED_WHITE").verdict, MapVerdict::Unobserved);
 
   LaneLineEvidence both(twoLanes(), ChangeOptions{});
-  SweepPaint paint;
-  paint.runs = {{{1.0, 1.2}, 4}, {{2.0, 1.2}, 4}, {{3.0, 0.1}, 4}};
-  both.add(0, paint, at(0.0));
-  ASSERT_EQ(both.stretches().size(), 1u);
-  EXPECT_EQ(both.stretches()[0].verdict, MapVerdict::Consistent);
+  drive(both, {1.1, 0.05, -3.45});
+  EXPECT_EQ(ofLine(both.stretches(kAsphalt), "DASHED_WHITE").verdict, MapVerdict::Consistent);
+
+  LaneLineEvidence glimpse(twoLanes(), ChangeOptions{});
+  SweepPaint few = sweep({});
+  for (double x : {1.125, 3.125}) few.runs.push_back({{x, 1.1}, 4});
+  glimpse.add(0, few, at(0.0));
+  const std::vector<LaneLineStretch> s = glimpse.stretches(kAsphalt);
+  for (const LaneLineStretch& x : s) EXPECT_EQ(x.verdict, MapVerdict::Unobserved) << x.markType;
+  EXPECT_FALSE(s.empty());
 }
 
 TEST(LaneLineCheck, PaintInACrossingAndBeyondTheRangeIsNotTheLines) {
@@ -124,11 +143,15 @@ TEST(LaneLineCheck, PaintInACrossingAndBeyondTheRangeIsNotTheLines) {
   c.edge2 = {{5, -3.5, 0}, {5, 3.5, 0}};
   map.pedestrianCrossings = {c};
   LaneLineEvidence evidence(map, ChangeOptions{});
-  evidence.add(0, runsAlong(1.2, 1.5, 5.5), at(1.5));   // within the crossing grown by a metre
-  SweepPaint far;  // beside the line 9-12 m ahead: farther than paint shows
-  for (double x = 9.0; x <= 12.0; x += 0.5) far.runs.push_back({{x, 1.2}, 4});
+  SweepPaint inCrossing;  // within the crossing grown by a metre
+  for (double x = 1.125; x < 6.0; x += 0.25)
+    for (double y = -5.375; y < 5.5; y += 0.25) inCrossing.road.push_back({x, y}), inCrossing.runs.push_back({{x, y}, 4});
+  evidence.add(0, inCrossing, at(0.0));
+  SweepPaint far = sweep({1.1});  // 9-12 m ahead of the sensor: farther than paint shows
+  for (Eigen::Vector2d& p : far.road) p.x() += 9.0;
+  for (PaintRun& r : far.runs) r.centre.x() += 9.0;
   evidence.add(1, far, at(0.0));
-  EXPECT_TRUE(evidence.stretches().empty());
+  EXPECT_TRUE(evidence.stretches(kAsphalt).empty());
 }
 
 }  // namespace
