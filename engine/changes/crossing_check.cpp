@@ -96,6 +96,14 @@ double CrossingEvidence::asphaltShare() const {
   return t.road > 0 ? double(t.painted) / t.road : 0.0;
 }
 
+std::vector<PaintedCell> CrossingEvidence::paintedCells() const {
+  std::vector<PaintedCell> out;
+  cells_.forEach([&](const Vec2& centre, const PaintCell& cell) {
+    if (cell.road > 0 && cell.runs > 0) out.push_back({centre, Place(cell.place) != Place::Road});
+  });
+  return out;
+}
+
 PaintTally CrossingEvidence::tallyIn(const Outline& outline, Place place) const {
   Vec2 lo = outline.front(), hi = outline.front();
   for (const Vec2& p : outline) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);

@@ -26,6 +26,12 @@ struct CrossingVerdict {
   int firstFrame = -1, bestFrame = -1;  // the first frame with road points inside; the one with most paint (or road points)
 };
 
+// A 0.25 m cell of road that held a paint run over the drive.
+struct PaintedCell {
+  Eigen::Vector2d centre;
+  bool onMapPaint = false;  // within reach of a painted lane line or in a crossing; else the road's own mark or unmapped paint
+};
+
 // Paint across the road where the map has no crossing and no painted lane line.
 struct MissingCrossing {
   std::vector<Eigen::Vector2d> outline;  // a rectangle around the paint, counter-clockwise
@@ -58,6 +64,7 @@ class CrossingEvidence {
   std::vector<MissingCrossing> missing() const;
   // The share of the log's road cells off the map's paint that are painted (0 when none is seen).
   double asphaltShare() const;
+  std::vector<PaintedCell> paintedCells() const;
 
  private:
   enum class Place : uint8_t { Road, PaintedLine, Crossing };  // a PaintCell's place

@@ -119,6 +119,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   report.crossings = crossings.verdicts();
   report.missingCrossings = crossings.missing();
   report.laneLines = laneLines.stretches(crossings.asphaltShare());
+  report.paint = crossings.paintedCells();
   report.frames = frames;
   report.drivenKm = drivenM / 1000.0;
   return report;

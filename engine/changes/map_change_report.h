@@ -35,7 +35,8 @@ struct MapChangeReport {
   std::vector<MissingSurface> missing;
   std::vector<CrossingVerdict> crossings;  // every pedestrian crossing of the map, in its order (detectMapChanges)
   std::vector<MissingCrossing> missingCrossings;
-  std::vector<LaneLineStretch> laneLines;  // the stretches of painted lane lines with paint runs beside them
+  std::vector<LaneLineStretch> laneLines;  // the stretches of painted lane lines with road seen beside them
+  std::vector<PaintedCell> paint;          // what the crossing and lane-line checks read
   double observedBoundaryKm = 0.0;  // of the map's boundary with a verdict
   SurfaceEvidence evidence;         // what it was judged on
   size_t frames = 0;                // sweeps added to the evidence

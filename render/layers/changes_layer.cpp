@@ -40,6 +40,18 @@ std::vector<ColoredVertex> surfaceCells(const Scene& scene, const SurfaceEvidenc
   return v;
 }
 
+// A quad per painted cell: on the map's paint or off it.
+void addPaintCells(const Scene& scene, const std::vector<PaintedCell>& cells, double size, const Eigen::Vector4f& onMap,
+                   const Eigen::Vector4f& offMap, std::vector<ColoredVertex>& v) {
+  const float h = float(size) / 2;
+  for (const PaintedCell& c : cells) {
+    const Eigen::Vector3f m = scene.local({c.centre.x(), c.centre.y(), scene.groundZ(c.centre, scene.origin.z()) + 0.04});
+    const Eigen::Vector3f corners[4] = {m + Eigen::Vector3f(-h, -h, 0), m + Eigen::Vector3f(h, -h, 0), m + Eigen::Vector3f(h, h, 0),
+                                        m + Eigen::Vector3f(-h, h, 0)};
+    for (int i : {0, 1, 2, 0, 2, 3}) v.push_back({corners[i], c.onMapPaint ? onMap : offMap});
+  }
+}
+
 }  // namespace
 
 void ChangesLayer::setAnalysis(const Scene& scene, const Analysis& analysis) {
@@ -69,7 +81,10 @@ void ChangesLayer::build(const Scene& scene) {
       if (s.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, s.line, false), 0.35f, contradicted_);
       else if (show_ == 2 && s.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, s.line, false), 0.1f, consistent_);
     }
-    if (show_ >= 1) cells = surfaceCells(scene, report.evidence, road_, notRoad_);
+    if (show_ >= 1) {
+      cells = surfaceCells(scene, report.evidence, road_, notRoad_);
+      addPaintCells(scene, report.paint, ChangeOptions{}.paintCell, paintOnMap_, paintOffMap_, cells);
+    }
   }
   if (analysis_ && analysis_->changeLabels && labels_)
     for (const MapChangeLabel& l : *analysis_->changeLabels)
@@ -91,6 +106,8 @@ std::vector<MarkerKey> ChangesLayer::markerKeys() const {
   if (show_ >= 1) {
     keys.push_back({"lidar: road", road_});
     keys.push_back({"lidar: beside the road", notRoad_});
+    keys.push_back({"lidar: paint on mapped paint", paintOnMap_});
+    keys.push_back({"lidar: paint elsewhere", paintOffMap_});
   }
   if (show_ == 2) keys.push_back({"unobserved", unobserved_});
   if (analysis_->changeLabels && labels_) keys.push_back({"labelled change (map_change.json)", labelled_});

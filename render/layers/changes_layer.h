@@ -10,7 +10,7 @@ namespace hdprior::render {
 // The map check (Analysis::changes): each drivable area's boundary stretches coloured by verdict
 // (contradicted thick, consistent thin, unobserved faint), the missing surfaces' outlines, the
 // crossings and lane lines by verdict, optionally what the lidar saw as road and beside the road
-// under them, and a simulated log's labelled changes (where its map really differs) thin in cyan.
+// under them with the painted cells the paint checks read (on the map's paint or off it), and a simulated log's labelled changes (where its map really differs) thin in cyan.
 class ChangesLayer : public Layer {
  public:
   static constexpr const char* kName = "changes";
@@ -31,6 +31,7 @@ class ChangesLayer : public Layer {
   Eigen::Vector4f contradicted_{1.0f, 0.15f, 0.15f, 1.0f}, consistent_{0.25f, 0.95f, 0.35f, 1.0f},
       unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, missing_{1.0f, 0.2f, 1.0f, 1.0f}, labelled_{0.1f, 0.95f, 0.95f, 1.0f};
   Eigen::Vector4f road_{0.3f, 0.5f, 0.95f, 0.4f}, notRoad_{0.2f, 0.55f, 0.25f, 0.45f};
+  Eigen::Vector4f paintOnMap_{1.0f, 1.0f, 1.0f, 0.9f}, paintOffMap_{1.0f, 0.6f, 0.1f, 0.9f};
 };
 
 }  // namespace hdprior::render

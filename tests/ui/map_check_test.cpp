@@ -1,7 +1,8 @@
 // The bench's map check under Xvfb: after a run, `check-map` draws the changes layer (the street
 // drawn too narrow in red, its label in cyan), lists a map-change event at the frame that saw it,
 // and `report` counts and scores it (a labelled change it cannot see is a missed-change event);
-// the same for a crossing drawn where none is painted and a painted one the map lacks.
+// the same for a crossing drawn where none is painted and a painted one the map lacks, with the
+// painted cells the check read.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -38,6 +39,10 @@ size_t labelledPixels(const render::Image& image) {
   return pixelsOf(image, [](const uint8_t* p) { return p[0] < 70 && p[1] > 200 && p[2] > 200; });  // cyan (26, 242, 242)
 }
 
+size_t paintElsewherePixels(const render::Image& image) {
+  return pixelsOf(image, [](const uint8_t* p) { return p[0] > 220 && p[1] > 120 && p[1] < 180 && p[2] < 90; });  // orange (255, 153, 26)
+}
+
 TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
   const SimulatedDrive drive = simulatedTownDrive("map_check", 1, 7, 8.0);
   const int64_t narrowed = narrowStreetAtStart(drive.log, 2.5);
@@ -65,13 +70,17 @@ TEST(MapCheck, CheckMapDrawsTheContradictedStreetAndListsItsEvent) {
 TEST(MapCheck, CrossingsTheLidarContradictsAreCountedAndListedAsEvents) {
   const SimulatedDrive drive = simulatedTownDrive("map_check_crossings", 1, 0, 6.0);
   const int64_t drawn = moveACrossing(drive.log).second;
-  writeText(drive.folder / "script.txt", "run\ncheck-map\nwait 1\nreport\nevents\n");
+  const fs::path before = drive.folder / "before.png", after = drive.folder / "after.png";
+  writeText(drive.folder / "script.txt", "run\nview top\nlayer sweep off\nlayer changes on\nwait 2\nscreenshot " + before.string() +
+                                             "\ncheck-map\nwait 1\nscreenshot " + after.string() + "\nreport\nevents\n");
   const CommandResult r = runWithDisplay("view " + quoted(drive.log) + " --script " + quoted(drive.folder / "script.txt"), drive.folder);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("crossings: 1 contradicted"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(", 1 missing\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("map-change crossing " + std::to_string(drawn) + ": no more paint than the asphalt"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("map-change unmapped crossing"), std::string::npos) << r.out;
+  // The painted cells the checks read, off the map's paint in orange (the unmapped crossing's, the asphalt's marks).
+  EXPECT_GT(paintElsewherePixels(readPng(after)), paintElsewherePixels(readPng(before)) + 100) << after;
 }
 
 TEST(MapCheck, CheckMapBeforeARunStopsTheScriptAtItsLine) {

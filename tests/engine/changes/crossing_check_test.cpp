@@ -129,6 +129,20 @@ TEST(CrossingCheck, PaintTheMapLacksIsAMissingCrossingButLaneLinesAndStopLinesAr
   EXPECT_GT(signedArea(missing[0].outline), 20.0);
   EXPECT_GT(missing[0].confidence, 0.95);
   EXPECT_EQ(missing[0].bestFrame, 0);
+  // The painted cells the checks read: the line's on the map's paint, the stop line's and stripes' off it.
+  int onLine = 0, offMap = 0;
+  for (const PaintedCell& c : evidence.paintedCells()) {
+    if (std::abs(c.centre.y() - 2.0) < 1.0) {
+      EXPECT_TRUE(c.onMapPaint) << c.centre.transpose();
+      ++onLine;
+    }
+    if (std::abs(c.centre.y()) < 0.5) {
+      EXPECT_FALSE(c.onMapPaint) << c.centre.transpose();
+      ++offMap;
+    }
+  }
+  EXPECT_GE(onLine, 60);
+  EXPECT_GE(offMap, 5);
 }
 
 // Asphalt with a bright patch in 5 % of its quarter-metre cells (a fixed hash), a crossing (x 5..8)
