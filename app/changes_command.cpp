@@ -45,7 +45,7 @@ int runChanges(const ChangesArguments& a) {
     poses = runAndWriteLog(log, config, {}, out / "run", [&](size_t d, size_t t) { bar(d, t); }).run.final();
   }
   const auto start = std::chrono::steady_clock::now();
-  const std::unique_ptr<HdMap> map = loadCheckedMap(log);
+  const std::unique_ptr<HdMap> map = loadCheckedMap(log, poses, config.roadPoints, ChangeOptions{});
   ProgressBar bar("changes");
   const MapChangeReport report =
       detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{}, [&](size_t d, size_t t) { bar(d, t); });

@@ -56,7 +56,7 @@ fs::path logTrajectoryFile(const fs::path& dir, const std::string& id) {
 // The map check along the run's final poses into `dir` (as `hdprior changes` writes it), scored
 // against the log's map_change.json when it has one.
 LogEvaluation::MapCheck checkMap(const ArgoverseLog& log, const PoseTrajectory& poses, const Config& config, const fs::path& dir) {
-  const std::unique_ptr<HdMap> map = loadCheckedMap(log);
+  const std::unique_ptr<HdMap> map = loadCheckedMap(log, poses, config.roadPoints, ChangeOptions{});
   const MapChangeReport report = detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{});
   writeChangeReport(dir, report, log.id());
   const std::optional<std::vector<MapChangeLabel>> labels = logMapChangeLabels(log.dir());

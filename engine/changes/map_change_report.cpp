@@ -39,10 +39,17 @@ SurfaceEvidence evidenceGrid(const ArgoverseLog& log, const PoseTrajectory& pose
 
 }  // namespace
 
-std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log) {
-  HdMapOptions options;
-  options.ndtCellSizes.clear();
-  return std::make_unique<HdMap>(HdMap::load(log.mapFiles(), options));
+std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log, const PoseTrajectory& poses, const SweepRoadPointOptions& roadPoints,
+                                      const ChangeOptions& options) {
+  HdMapOptions mapOptions;
+  mapOptions.ndtCellSizes.clear();
+  if (!poses.empty()) {
+    Eigen::AlignedBox2d window;
+    for (const SE3& p : poses.poses()) window.extend(p.translation().head<2>());
+    const double reach = roadPoints.road.maxRange + options.reach + 10.0;
+    mapOptions.raster.window = Eigen::AlignedBox2d(window.min().array() - reach, window.max().array() + reach);
+  }
+  return std::make_unique<HdMap>(HdMap::load(log.mapFiles(), mapOptions));
 }
 
 std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, const std::vector<BoundaryStretch>& stretches) {

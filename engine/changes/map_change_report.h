@@ -57,9 +57,12 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
 // The verdicts on evidence already gathered (frames and drivenKm are left at 0).
 MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, const ChangeOptions& options);
 
-// The log's map as the check needs it: the drivable area and its distance field, the ground-height
-// raster (no NDT grids). Throws Error naming the file that is wrong.
-std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log);
+// The log's map as the check along `poses` needs it: the drivable area and its distance field
+// within reach of the sweeps it reads (the road points' range, a boundary reading's reach and 10 m
+// of distance beyond), the ground-height raster (no NDT grids). Throws Error naming the file that
+// is wrong.
+std::unique_ptr<HdMap> loadCheckedMap(const ArgoverseLog& log, const PoseTrajectory& poses, const SweepRoadPointOptions& roadPoints,
+                                      const ChangeOptions& options);
 
 // The element verdicts from the stretches (every polygon of the map, in its order).
 std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, const std::vector<BoundaryStretch>& stretches);

@@ -58,13 +58,19 @@ GridGeometry gridOver(const VectorMap& map, const DrivableRasterOptions& o, cons
       hi = hi.cwiseMax(p.head<2>());
     }
   }
-  const Eigen::Vector2d first = ((lo.array() - o.margin) / o.resolution).floor();
-  const Eigen::Vector2d last = ((hi.array() + o.margin) / o.resolution).ceil();
+  lo.array() -= o.margin;
+  hi.array() += o.margin;
+  if (o.window) {
+    lo = lo.cwiseMax(o.window->min());
+    hi = hi.cwiseMax(lo).cwiseMin(o.window->max()).cwiseMax(lo);  // no overlap: an empty strip at lo
+  }
+  const Eigen::Vector2d first = (lo / o.resolution).array().floor();
+  const Eigen::Vector2d last = ((hi / o.resolution).array().ceil()).cwiseMax(first.array() + 1.0);
   const Eigen::Vector2d size = last - first;
   const double cells = size.x() * size.y();
   if (!(cells <= double(o.maxCells)) || size.maxCoeff() > 1e9) {
-    throw Error(source, "drivable area extent " + std::to_string(hi.x() - lo.x()) + " x " +
-                            std::to_string(hi.y() - lo.y()) + " m gives " + std::to_string(cells) +
+    throw Error(source, "drivable area extent " + std::to_string(hi.x() - lo.x() - 2 * o.margin) + " x " +
+                            std::to_string(hi.y() - lo.y() - 2 * o.margin) + " m gives " + std::to_string(cells) +
                             " cells at " + std::to_string(o.resolution) + " m, more than the limit of " +
                             std::to_string(o.maxCells));
   }
@@ -200,9 +206,10 @@ std::vector<Eigen::Vector2d> DrivableRaster::surfacePoints() const {
 // one (coinciding edges) is dropped; the points come sorted row by row.
 std::vector<Eigen::Vector2d> DrivableRaster::traceBoundary(const VectorMap& map) const {
   const GridGeometry& g = geometry_;
+  // Samples outside the raster (a window of the map: DrivableRasterOptions::window) are dropped.
   const auto nextToEmpty = [&](const Eigen::Vector2d& p) {
     int col, row;
-    if (!g.cellOf(p, col, row)) return true;
+    if (!g.cellOf(p, col, row)) return false;
     for (int dr = -1; dr <= 1; ++dr) {
       for (int dc = -1; dc <= 1; ++dc) {
         if (!drivable(col + dc, row + dr)) return true;

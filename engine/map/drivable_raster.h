@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "engine/io/vector_map.h"
 #include "engine/map/grid_geometry.h"
@@ -15,6 +17,8 @@ struct DrivableRasterOptions {
   double resolution = 0.10;      // metres per cell (the paper's 10 cm)
   double margin = 10.0;          // empty border around the polygons' extent, metres (at least one cell)
   size_t maxCells = 300'000'000;  // refuse rasters larger than this (a corrupt or absurd extent)
+  // City x, y: raster only this part of the map (a check along one drive of a large map).
+  std::optional<Eigen::AlignedBox2d> window;
 };
 
 // The union of all drivable-area polygons of a map, rasterised. A cell is drivable when

@@ -37,7 +37,7 @@ void BM_MapCheck(benchmark::State& state) {
   const Config config;
   size_t frames = 0;
   for (auto _ : state) {
-    const std::unique_ptr<HdMap> map = loadCheckedMap(log);
+    const std::unique_ptr<HdMap> map = loadCheckedMap(log, poses, config.roadPoints, ChangeOptions{});
     frames = detectMapChanges(log, *map, poses, config.roadPoints, ChangeOptions{}).frames;
   }
   state.counters["sweeps_checked"] = double(frames);

@@ -14,6 +14,7 @@
 
 #include "engine/error.h"
 #include "engine/io/vector_map.h"
+#include "engine/map/boundary_distance.h"
 #include "synthetic_maps.h"
 #include "test_data.h"
 
@@ -230,6 +231,41 @@ TEST_F(RealDrivableRaster, BoundaryPointsLieOnTheUnionBoundary) {
     mixed += in && out;
   }
   EXPECT_GT(double(mixed), 0.99 * double(points.size()));
+}
+
+// A window of the map (a check along one drive): only that part is rastered, its cells and
+// boundary points are the whole raster's there, and the distance field agrees wherever the nearest
+// boundary within 10 m lies inside the window.
+TEST_F(RealDrivableRaster, AWindowRastersOnlyThatPartAndAgreesWithTheWhole) {
+  const GridGeometry& whole = raster_->geometry();
+  const Eigen::Vector2d centre = whole.origin + 0.5 * whole.resolution * Eigen::Vector2d(whole.cols, whole.rows);
+  DrivableRasterOptions options;
+  options.window = Eigen::AlignedBox2d(centre.array() - 60.0, centre.array() + 60.0);
+  const DrivableRaster part = DrivableRaster::build(*map_, options, "real");
+  const GridGeometry& g = part.geometry();
+  EXPECT_NEAR(g.cols * g.resolution, 120.0, 0.2);
+  EXPECT_NEAR(g.rows * g.resolution, 120.0, 0.2);
+  size_t drivable = 0;
+  for (int r = 0; r < g.rows; r += 7)
+    for (int c = 0; c < g.cols; c += 7) {
+      const Eigen::Vector2d p = g.cellCentre(c, r);
+      ASSERT_EQ(part.drivable(c, r), raster_->contains(p)) << p.transpose();
+      drivable += part.drivable(c, r);
+    }
+  EXPECT_GT(drivable, 50u);
+  size_t inside = 0;
+  for (const Eigen::Vector2d& p : raster_->boundaryPoints()) inside += options.window->contains(p);
+  EXPECT_NEAR(double(part.boundaryPoints().size()), double(inside), 0.01 * double(inside));
+  const Eigen::AlignedBox2d grid(options.window->min().array() - 0.1, options.window->max().array() + 0.1);  // whole cells
+  for (const Eigen::Vector2d& p : part.boundaryPoints()) ASSERT_TRUE(grid.contains(p)) << p.transpose();
+
+  const BoundaryDistance wholeDistance = BoundaryDistance::build(*raster_), partDistance = BoundaryDistance::build(part);
+  for (double x = -45.0; x <= 45.0; x += 3.7)
+    for (double y = -45.0; y <= 45.0; y += 3.7) {
+      const Eigen::Vector2d p = centre + Eigen::Vector2d(x, y);
+      const double d = wholeDistance.distance(p);
+      if (std::abs(d) <= 10.0) ASSERT_NEAR(partDistance.distance(p), d, 1e-4) << p.transpose();
+    }
 }
 
 }  // namespace
