@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
 #include <string>
 
 namespace hdprior {
@@ -52,8 +53,9 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
                   m.roadCells, m.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(m.bestFrame), b});
   }
+  std::set<std::pair<int64_t, std::string>> lines;  // a line is judged whole: one event per line
   for (const LaneLineStretch& s : report.laneLines) {
-    if (s.verdict != MapVerdict::Contradicted || s.bestFrame < 0) continue;
+    if (s.verdict != MapVerdict::Contradicted || s.bestFrame < 0 || !lines.insert({s.laneId, s.side}).second) continue;
     char b[240];
     std::snprintf(b, sizeof b, "lane %lld %s line: paint %.1f m to its %s (%d of %d road cells), as little on it as on the asphalt (%d of %d; confidence %.2f)",
                   (long long)s.laneId, s.side.c_str(), std::abs(s.offset), s.offset > 0 ? "left" : "right", s.atOffset.painted, s.atOffset.road,

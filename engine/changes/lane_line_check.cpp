@@ -156,16 +156,26 @@ std::vector<LaneLineEvidence::Profile> LaneLineEvidence::profiles() const {
 std::vector<LaneLineStretch> LaneLineEvidence::stretches(double asphaltShare) const {
   const std::vector<Profile> profile = profiles();
   // A line is judged whole: a stretch shows a few painted cells, too few to tell paint from asphalt.
-  std::map<std::pair<int64_t, std::string>, Profile> lines;
+  struct Line {
+    Profile profile{};
+    int firstFrame = -1, bestFrame = -1, bestRuns = 0;
+  };
+  std::map<std::pair<int64_t, std::string>, Line> lines;
   for (size_t k = 0; k < stretches_.size(); ++k) {
-    Profile& line = lines[{stretches_[k].judged.laneId, stretches_[k].judged.side}];
-    for (int b = 0; b < kBins; ++b) line[b].road += profile[k][b].road, line[b].painted += profile[k][b].painted;
+    const Stretch& s = stretches_[k];
+    Line& line = lines[{s.judged.laneId, s.judged.side}];
+    for (int b = 0; b < kBins; ++b) line.profile[b].road += profile[k][b].road, line.profile[b].painted += profile[k][b].painted;
+    if (s.judged.firstFrame >= 0 && (line.firstFrame < 0 || s.judged.firstFrame < line.firstFrame)) line.firstFrame = s.judged.firstFrame;
+    if (s.bestRuns > line.bestRuns) line.bestRuns = s.bestRuns, line.bestFrame = s.judged.bestFrame;
   }
   std::vector<LaneLineStretch> out;
   for (size_t k = 0; k < stretches_.size(); ++k) {
     if (std::none_of(profile[k].begin(), profile[k].end(), [](const PaintTally& t) { return t.road > 0; })) continue;
     LaneLineStretch j = stretches_[k].judged;
-    judge(lines.at({j.laneId, j.side}), asphaltShare, j);
+    const Line& line = lines.at({j.laneId, j.side});
+    judge(line.profile, asphaltShare, j);
+    j.firstFrame = line.firstFrame;
+    j.bestFrame = line.bestFrame;
     out.push_back(std::move(j));
   }
   return out;

@@ -28,12 +28,12 @@ struct LaneLineStretch {
   std::vector<Eigen::Vector2d> line;
   MapVerdict verdict = MapVerdict::Unobserved;
   double confidence = 0.0;
-  // The verdict and its evidence are the whole line's (every stretch of it).
+  // The verdict, its evidence and the frames are the whole line's (every stretch of it).
   double offset = 0.0;  // contradicted: where the paint is, metres to the left of the line (negative: right)
   PaintTally onLine;    // the road cells within a quarter metre of the line, and those painted
   PaintTally atOffset;  // contradicted: the half metre around `offset`
   double asphaltShare = 0.0;  // the log's painted share off the map's paint
-  int firstFrame = -1, bestFrame = -1;  // the first frame with a run beside it; the one with most
+  int firstFrame = -1, bestFrame = -1;  // the first frame with a run beside the line; the one with most
 };
 
 // The paint beside the map's painted lane lines, in the painted cells (PaintCells) of the drive

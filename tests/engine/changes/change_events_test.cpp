@@ -1,0 +1,38 @@
+// The map check's events: a lane line is judged whole, so its contradicted stretches are one event
+// at the line's best frame; consistent lines and stretches never seen are none.
+#include "engine/changes/change_events.h"
+
+#include <gtest/gtest.h>
+
+namespace hdprior {
+namespace {
+
+LaneLineStretch stretchOf(int64_t lane, const std::string& side, int index, MapVerdict verdict, int bestFrame) {
+  LaneLineStretch s;
+  s.laneId = lane;
+  s.side = side;
+  s.index = index;
+  s.verdict = verdict;
+  s.bestFrame = bestFrame;
+  s.offset = -1.2;
+  s.confidence = 0.9;
+  s.onLine = {400, 12};
+  s.atOffset = {300, 40};
+  return s;
+}
+
+TEST(ChangeEvents, AContradictedLaneLineIsOneEventAtItsBestFrame) {
+  MapChangeReport report;
+  report.laneLines = {stretchOf(7, "right", 0, MapVerdict::Contradicted, 40), stretchOf(7, "right", 1, MapVerdict::Contradicted, 40),
+                      stretchOf(7, "right", 2, MapVerdict::Contradicted, 40), stretchOf(7, "left", 0, MapVerdict::Consistent, 12),
+                      stretchOf(9, "left", 0, MapVerdict::Contradicted, -1)};
+  const std::vector<RunEvent> events = mapChangeEvents(report);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, RunEvent::Kind::MapChange);
+  EXPECT_EQ(events[0].frame, 40u);
+  EXPECT_EQ(events[0].detail,
+            "lane 7 right line: paint 1.2 m to its right (40 of 300 road cells), as little on it as on the asphalt (12 of 400; confidence 0.90)");
+}
+
+}  // namespace
+}  // namespace hdprior
