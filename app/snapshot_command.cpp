@@ -205,7 +205,8 @@ Command addSnapshotCommand(CLI::App& hdprior) {
       ->check(parsedBy([](const std::string& text) { render::parseView(text); }));
   command->add_option("--layers", a->layers,
                       "all (ground, drivable, boundary, lanes, trajectory, sweep, ego) or a list that may also name crossings, "
-                      "accumulated, ndt_cells, landscape, odometry_trajectory, optimized_trajectory, file_trajectory, keyframes, road_points, match, ground_labels "
+                      "accumulated, ndt_cells, landscape, odometry_trajectory, optimized_trajectory, file_trajectory, keyframes, road_points, match, ground_labels, "
+                      "changes (runs the map check: its verdicts, the lidar's surface and paint) "
                       "(default: all for top and orbit; drivable,landscape,boundary,road_points,match for landscape; "
                       "drivable,boundary,keyframes,road_points,match for inspector)")
       ->type_name("a,b,c")
