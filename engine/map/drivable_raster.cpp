@@ -62,7 +62,7 @@ GridGeometry gridOver(const VectorMap& map, const DrivableRasterOptions& o, cons
   hi.array() += o.margin;
   if (o.window) {
     lo = lo.cwiseMax(o.window->min());
-    hi = hi.cwiseMax(lo).cwiseMin(o.window->max()).cwiseMax(lo);  // no overlap: an empty strip at lo
+    hi = hi.cwiseMin(o.window->max()).cwiseMax(lo);  // no overlap: a strip one cell wide at lo
   }
   const Eigen::Vector2d first = (lo / o.resolution).array().floor();
   const Eigen::Vector2d last = ((hi / o.resolution).array().ceil()).cwiseMax(first.array() + 1.0);
