@@ -13,8 +13,6 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Outline = std::vector<Vec2>;
 
-double confidenceOf(double evidence) { return 1.0 / (1.0 + std::exp(-std::abs(evidence))); }
-
 // The frame of the most runs among `frames` (sorted), and the first.
 std::pair<int, int> firstAndBestFrame(std::vector<int> frames) {
   std::sort(frames.begin(), frames.end());
@@ -149,7 +147,7 @@ std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
     v.verdict = e >= options_.crossingEvidence                  ? MapVerdict::Consistent
                 : e <= -options_.crossingEvidence && asAsphalt ? MapVerdict::Contradicted
                                                                : MapVerdict::Unobserved;
-    v.confidence = v.verdict == MapVerdict::Unobserved ? 0.0 : confidenceOf(e);
+    v.confidence = v.verdict == MapVerdict::Unobserved ? 0.0 : evidenceConfidence(e);
     out.push_back(std::move(v));
   }
   // Faint or worn paint reads as asphalt: no paint is evidence only in a log whose crossings show it.
@@ -209,7 +207,7 @@ std::vector<MissingCrossing> CrossingEvidence::missing() const {
     const PaintTally t = tallyInBand(c.centre, c.along, -d / 2, d / 2, lo, hi);
     m.roadCells = t.road;
     m.paintCells = t.painted;
-    m.confidence = confidenceOf(evidence(t, share));
+    m.confidence = evidenceConfidence(evidence(t, share));
     std::vector<int> frames;
     for (const StrayRun& s : stray_)
       if (ringContains(m.outline, s.city)) frames.push_back(s.frame);

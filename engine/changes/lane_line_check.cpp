@@ -202,10 +202,10 @@ void LaneLineEvidence::judge(const Profile& line, double asphaltShare, LaneLineS
   const double on = evidence(j.onLine);
   if (on >= options_.laneLineEvidence) {
     j.verdict = MapVerdict::Consistent;
-    j.confidence = 1.0 / (1.0 + std::exp(-on));
+    j.confidence = evidenceConfidence(on);
   } else if (beside >= options_.laneLineEvidence && on <= -options_.laneLineAsphalt) {
     j.verdict = MapVerdict::Contradicted;
-    j.confidence = 1.0 / (1.0 + std::exp(-std::min(beside, -on)));
+    j.confidence = evidenceConfidence(std::min(beside, -on));
   }
 }
 

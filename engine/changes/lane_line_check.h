@@ -66,7 +66,7 @@ class LaneLineEvidence {
     int frameRuns = 0, bestRuns = 0, lastFrame = -1;
   };
   using Profile = std::array<PaintTally, kBins>;  // a stretch's cells by their offset to its line
-  // The stretch a point is nearest to (within 1.5 m, outside every crossing) and its offset.
+  // The stretch a point is nearest to (within 2 m, outside every crossing) and its offset.
   std::optional<std::pair<size_t, double>> nearestStretch(const Eigen::Vector2d& city) const;
   void addRun(int frame, Stretch& stretch);
   std::vector<Profile> profiles() const;  // per stretch

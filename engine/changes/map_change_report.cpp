@@ -127,6 +127,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   report.missingCrossings = crossings.missing();
   report.laneLines = laneLines.stretches(crossings.asphaltShare());
   report.paint = crossings.paintedCells();
+  report.paintCell = options.paintCell;
   report.frames = frames;
   report.drivenKm = drivenM / 1000.0;
   return report;

@@ -37,6 +37,7 @@ struct MapChangeReport {
   std::vector<MissingCrossing> missingCrossings;
   std::vector<LaneLineStretch> laneLines;  // the stretches of painted lane lines with road seen beside them
   std::vector<PaintedCell> paint;          // what the crossing and lane-line checks read
+  double paintCell = 0.25;                 // metres, the width of those cells
   double observedBoundaryKm = 0.0;  // of the map's boundary with a verdict
   SurfaceEvidence evidence;         // what it was judged on
   size_t frames = 0;                // sweeps added to the evidence

@@ -11,6 +11,8 @@ double paintEvidence(const PaintTally& t, double asphaltShare, double contrast, 
   return t.painted * std::log(s1 / s0) + (t.road - t.painted) * std::log((1.0 - s1) / (1.0 - s0));
 }
 
+double evidenceConfidence(double evidence) { return 1.0 / (1.0 + std::exp(-std::abs(evidence))); }
+
 int64_t PaintCells::keyOf(const Eigen::Vector2d& city) const {
   const int64_t col = int64_t(std::floor(city.x() / size_)), row = int64_t(std::floor(city.y() / size_));
   return (col << 32) ^ (row & 0xffffffff);

@@ -23,6 +23,8 @@ struct PaintTally {
 // The log-likelihood ratio of a tally: painted (`contrast` times the asphalt's share of painted
 // cells, at least `minShare`) against asphalt, one binomial draw per cell.
 double paintEvidence(const PaintTally& t, double asphaltShare, double contrast, double minShare);
+// The confidence a verdict drawn from a log-likelihood ratio carries: the logistic of its size.
+double evidenceConfidence(double evidence);
 
 // The road near the sensor over a drive, in city cells `size` metres wide. Road marks are fixed in
 // the world, so a cell is counted once however many sweeps see it.

@@ -20,36 +20,27 @@ std::vector<Eigen::Vector3f> onGround(const Scene& scene, const std::vector<Eige
   return out;
 }
 
-// A quad per cell the lidar saw as road or as beside the road.
+// A square `size` metres wide on the ground at `centre` (lifted `lift` metres), as two triangles.
+void addGroundSquare(const Scene& scene, const Eigen::Vector2d& centre, double size, double lift, const Eigen::Vector4f& colour,
+                     std::vector<ColoredVertex>& v) {
+  const float h = float(size) / 2;
+  const Eigen::Vector3f m = scene.local({centre.x(), centre.y(), scene.groundZ(centre, scene.origin.z()) + lift});
+  const Eigen::Vector3f corners[4] = {m + Eigen::Vector3f(-h, -h, 0), m + Eigen::Vector3f(h, -h, 0), m + Eigen::Vector3f(h, h, 0),
+                                      m + Eigen::Vector3f(-h, h, 0)};
+  for (int i : {0, 1, 2, 0, 2, 3}) v.push_back({corners[i], colour});
+}
+
+// A square per cell the lidar saw as road or as beside the road.
 std::vector<ColoredVertex> surfaceCells(const Scene& scene, const SurfaceEvidence& e, const Eigen::Vector4f& road,
                                         const Eigen::Vector4f& notRoad) {
   std::vector<ColoredVertex> v;
   const GridGeometry& g = e.geometry();
-  const float h = float(g.resolution) / 2;
   for (int r = 0; r < g.rows; ++r)
     for (int c = 0; c < g.cols; ++c) {
       const Surface s = e.surface(g.index(c, r));
-      if (s == Surface::Unknown) continue;
-      const Eigen::Vector2d centre = g.cellCentre(c, r);
-      const Eigen::Vector3f m = scene.local({centre.x(), centre.y(), scene.groundZ(centre, scene.origin.z()) + 0.02});
-      const Eigen::Vector4f& colour = s == Surface::Road ? road : notRoad;
-      const Eigen::Vector3f corners[4] = {m + Eigen::Vector3f(-h, -h, 0), m + Eigen::Vector3f(h, -h, 0),
-                                          m + Eigen::Vector3f(h, h, 0), m + Eigen::Vector3f(-h, h, 0)};
-      for (int i : {0, 1, 2, 0, 2, 3}) v.push_back({corners[i], colour});
+      if (s != Surface::Unknown) addGroundSquare(scene, g.cellCentre(c, r), g.resolution, 0.02, s == Surface::Road ? road : notRoad, v);
     }
   return v;
-}
-
-// A quad per painted cell: on the map's paint or off it.
-void addPaintCells(const Scene& scene, const std::vector<PaintedCell>& cells, double size, const Eigen::Vector4f& onMap,
-                   const Eigen::Vector4f& offMap, std::vector<ColoredVertex>& v) {
-  const float h = float(size) / 2;
-  for (const PaintedCell& c : cells) {
-    const Eigen::Vector3f m = scene.local({c.centre.x(), c.centre.y(), scene.groundZ(c.centre, scene.origin.z()) + 0.04});
-    const Eigen::Vector3f corners[4] = {m + Eigen::Vector3f(-h, -h, 0), m + Eigen::Vector3f(h, -h, 0), m + Eigen::Vector3f(h, h, 0),
-                                        m + Eigen::Vector3f(-h, h, 0)};
-    for (int i : {0, 1, 2, 0, 2, 3}) v.push_back({corners[i], c.onMapPaint ? onMap : offMap});
-  }
 }
 
 }  // namespace
@@ -83,7 +74,8 @@ void ChangesLayer::build(const Scene& scene) {
     }
     if (show_ >= 1) {
       cells = surfaceCells(scene, report.evidence, road_, notRoad_);
-      addPaintCells(scene, report.paint, ChangeOptions{}.paintCell, paintOnMap_, paintOffMap_, cells);
+      for (const PaintedCell& c : report.paint)
+        addGroundSquare(scene, c.centre, report.paintCell, 0.04, c.onMapPaint ? paintOnMap_ : paintOffMap_, cells);
     }
   }
   if (analysis_ && analysis_->changeLabels && labels_)
