@@ -113,6 +113,7 @@ bool AppState::goToEvent(int direction) {
   const auto next = stepEvent(events, currentEvent, frame().index, direction);
   if (!next) return false;
   currentEvent = *next;
+  scrollToEvent = true;
   const RunEvent& e = events[*next];
   if (isFrameEvent(e.kind)) goToFrame((long long)e.frame);
   else inspectKeyframe(e.keyframe);

@@ -116,6 +116,7 @@ class AppState {
   std::vector<std::string> shownPlots;   // the Diagnostics plots shown, in diagnosticPlots() order
   std::vector<Bookmark> bookmarks;
   std::optional<size_t> currentEvent;    // the event last gone to
+  bool scrollToEvent = false;            // the events list brings it into view on the next frame
   bool measuring = false;                // M: the next two clicks on the ground measure
   bool picking = false;                  // P: the tooltip names what is under the cursor
   std::optional<GroundMeasure> lastMeasure;  // shown in the status bar

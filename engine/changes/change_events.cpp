@@ -25,6 +25,19 @@ std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryS
   return b;
 }
 
+// "sweeps 263-368 left out (27 read): their kerbs meet the map shifted 4.0 m (12 of 31 kerb points, 1 unshifted); the poses look off"
+std::string misalignedDetail(const std::vector<MisalignedSweep>& sweeps, size_t first, size_t last) {
+  const SweepAlignment& a = sweeps[first].alignment;
+  char b[240];
+  if (first == last)
+    std::snprintf(b, sizeof b, "sweep %d left out: its kerbs meet the map shifted %.1f m (%d of %d kerb points, %d unshifted); its pose looks off",
+                  sweeps[first].frame, a.shift.norm(), a.alignedShifted, a.kerbs, a.alignedAtPose);
+  else
+    std::snprintf(b, sizeof b, "sweeps %d-%d left out (%zu read): their kerbs meet the map shifted %.1f m (first: %d of %d kerb points, %d unshifted); the poses look off",
+                  sweeps[first].frame, sweeps[last].frame, last - first + 1, a.shift.norm(), a.alignedShifted, a.kerbs, a.alignedAtPose);
+  return b;
+}
+
 }  // namespace
 
 std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
@@ -61,6 +74,13 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
                   (long long)s.laneId, s.side.c_str(), std::abs(s.offset), s.offset > 0 ? "left" : "right", s.atOffset.painted, s.atOffset.road,
                   s.onLine.painted, s.onLine.road, s.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(s.bestFrame), b});
+  }
+  for (size_t i = 0; i < report.misaligned.size(); ++i) {
+    if (report.misaligned[i].followsAnother) continue;
+    size_t last = i;
+    while (last + 1 < report.misaligned.size() && report.misaligned[last + 1].followsAnother) ++last;
+    events.push_back({RunEvent::Kind::MisalignedSweeps, 0, size_t(report.misaligned[i].frame),
+                      misalignedDetail(report.misaligned, i, last)});
   }
   std::stable_sort(events.begin(), events.end(), [](const RunEvent& a, const RunEvent& b) { return a.frame < b.frame; });
   return events;

@@ -8,7 +8,7 @@ namespace hdprior {
 
 // A map-change event per contradicted drivable area, missing surface, contradicted or missing
 // crossing and contradicted lane line (one per line, however many stretches), at the sweep that
-// saw it best, in frame order: "drivable area 17: kerb 2.1 m outside its boundary over 20 m
+// saw it best, and one per run of sweeps the check left out as misaligned, in frame order: "drivable area 17: kerb 2.1 m outside its boundary over 20 m
 // (confidence 0.86)", "missing road surface 84 m2, 9.8 m beyond the map (confidence 0.93)".
 std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report);
 

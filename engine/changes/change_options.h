@@ -19,6 +19,10 @@ struct ChangeOptions {
   double missingGap = 1.0;      // road cells this far outside every polygon are candidates of a missing area ...
   double missingMinDepth = 3.0; // ... which must reach this far out ...
   double missingMinArea = 25.0; // ... and cover this many square metres
+  // How far off the poses may be, per metre driven from the first (the built-in odometry lost 2-3 %
+  // in its worst turns): a sweep whose kerbs line up with the map only under a shift this large
+  // is left out as a pose error; a larger shift is a map change.
+  double poseErrorPerMetre = 0.03;
   // Road paint (crossings): measured on the real sweeps, it stands out from asphalt only this near the sensor.
   double paintRange = 12.0;
   double paintContrast = 1.7;  // a bright return: this many times the median of the sweep's near ground

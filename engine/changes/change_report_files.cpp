@@ -155,8 +155,16 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
     laneLines[verdictName(s.verdict)] = laneLines[verdictName(s.verdict)].get<int>() + 1;
   for (const BoundaryStretch& s : report.stretches)
     if (s.samples > 0) stretches[verdictName(s.verdict)] = stretches[verdictName(s.verdict)].get<int>() + 1;
+  json misaligned = json::array();
+  for (const MisalignedSweep& m : report.misaligned)
+    misaligned.push_back({{"frame", m.frame},
+                          {"kerb_points", m.alignment.kerbs},
+                          {"kerb_points_on_map", m.alignment.alignedAtPose},
+                          {"kerb_points_on_map_shifted", m.alignment.alignedShifted},
+                          {"shift_m", {number(m.alignment.shift.x()), number(m.alignment.shift.y())}}});
   return json{{"log_id", logId},
               {"frames", report.frames},
+              {"frames_left_out", misaligned},
               {"driven_km", number(report.drivenKm)},
               {"observed_boundary_km", number(report.observedBoundaryKm)},
               {"drivable_areas", areas},

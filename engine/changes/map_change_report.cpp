@@ -12,28 +12,31 @@ namespace hdprior {
 
 namespace {
 
+struct SpacedSweep {
+  size_t index = 0;
+  double driven = 0.0;  // metres along the poses from the first sweep added
+};
+
 // The sweeps to add: the first the poses cover, then one every `spacing` metres.
-std::vector<size_t> spacedSweeps(const ArgoverseLog& log, const PoseTrajectory& poses, double spacing, double& drivenM) {
-  std::vector<size_t> out;
+std::vector<SpacedSweep> spacedSweeps(const ArgoverseLog& log, const PoseTrajectory& poses, double spacing) {
+  std::vector<SpacedSweep> out;
   Eigen::Vector3d last = Eigen::Vector3d::Zero();
-  drivenM = 0.0;
   for (size_t i = 0; i < log.sweepCount(); ++i) {
     const int64_t t = log.sweepTimestamps()[i];
     if (!poses.covers(t)) continue;
     const Eigen::Vector3d p = poses.at(t).translation();
-    if (out.empty() || (p - last).norm() >= spacing) {
-      if (!out.empty()) drivenM += (p - last).norm();
-      out.push_back(i);
-      last = p;
-    }
+    if (out.empty()) out.push_back({i, 0.0});
+    else if ((p - last).norm() >= spacing) out.push_back({i, out.back().driven + (p - last).norm()});
+    else continue;
+    last = p;
   }
   return out;
 }
 
-SurfaceEvidence evidenceGrid(const ArgoverseLog& log, const PoseTrajectory& poses, const std::vector<size_t>& sweeps,
+SurfaceEvidence evidenceGrid(const ArgoverseLog& log, const PoseTrajectory& poses, const std::vector<SpacedSweep>& sweeps,
                              const SweepRoadPointOptions& roadPoints, const ChangeOptions& options) {
   std::vector<Eigen::Vector2d> positions;
-  for (size_t i : sweeps) positions.push_back(poses.at(log.sweepTimestamps()[i]).translation().head<2>());
+  for (const SpacedSweep& s : sweeps) positions.push_back(poses.at(log.sweepTimestamps()[s.index]).translation().head<2>());
   return SurfaceEvidence::around(positions, roadPoints.road.maxRange + options.reach, options.cell);
 }
 
@@ -89,29 +92,37 @@ MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, cons
 MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, const PoseTrajectory& poses,
                                  const SweepRoadPointOptions& roadPoints, const ChangeOptions& options,
                                  const std::function<void(size_t, size_t)>& progress, const std::atomic<bool>* cancel) {
-  double drivenM = 0.0;
-  const std::vector<size_t> sweeps = spacedSweeps(log, poses, options.frameSpacing, drivenM);
+  const std::vector<SpacedSweep> sweeps = spacedSweeps(log, poses, options.frameSpacing);
   SurfaceEvidence evidence = evidenceGrid(log, poses, sweeps, roadPoints, options);
   const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
   CrossingEvidence crossings(map.vectorMap(), options);
   LaneLineEvidence laneLines(map.vectorMap(), options);
   size_t frames = 0;
+  std::vector<MisalignedSweep> misaligned;
   struct Labelled {
     LabelledSweep sweep;
     SweepPaint paint;
+    SweepAlignment alignment;
   };
   auto label = [&](size_t k) {
-    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
-    const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k]);
-    Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}};
+    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k].index]);
+    const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k].index);
+    Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}, {}};
     out.paint = findSweepPaint(*sweep, out.sweep, options);
+    out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), options);
     return out;
   };
   auto add = [&](size_t k, const Labelled& labelled) {
-    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k]]);
-    evidence.add(int(sweeps[k]), labelled.sweep, cityTEgo, ground);
-    crossings.add(int(sweeps[k]), labelled.paint, cityTEgo);
-    laneLines.add(int(sweeps[k]), labelled.paint, cityTEgo);
+    const int frame = int(sweeps[k].index);
+    if (labelled.alignment.misaligned(options, sweeps[k].driven)) {
+      const bool follows = k > 0 && !misaligned.empty() && misaligned.back().frame == int(sweeps[k - 1].index);
+      misaligned.push_back({frame, labelled.alignment, follows});
+      return;
+    }
+    const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k].index]);
+    evidence.add(frame, labelled.sweep, cityTEgo, ground);
+    crossings.add(frame, labelled.paint, cityTEgo);
+    laneLines.add(frame, labelled.paint, cityTEgo);
     ++frames;
   };
   for (size_t k = 0; k < sweeps.size(); k += 2) {
@@ -129,7 +140,8 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
   report.paint = crossings.paintedCells();
   report.paintCell = options.paintCell;
   report.frames = frames;
-  report.drivenKm = drivenM / 1000.0;
+  report.misaligned = std::move(misaligned);
+  report.drivenKm = sweeps.empty() ? 0.0 : sweeps.back().driven / 1000.0;
   return report;
 }
 

@@ -11,6 +11,7 @@
 #include "engine/changes/lane_line_check.h"
 #include "engine/changes/map_verdict.h"
 #include "engine/changes/missing_surface.h"
+#include "engine/changes/sweep_alignment.h"
 #include "engine/geom/pose_trajectory.h"
 #include "engine/lidar/sweep_road_points.h"
 
@@ -41,13 +42,14 @@ struct MapChangeReport {
   double observedBoundaryKm = 0.0;  // of the map's boundary with a verdict
   SurfaceEvidence evidence;         // what it was judged on
   size_t frames = 0;                // sweeps added to the evidence
+  std::vector<MisalignedSweep> misaligned;  // sweeps left out: their kerbs line up with the map only shifted
   double drivenKm = 0.0;            // along the poses of those sweeps
 };
 
 // Adds a sweep every options.frameSpacing metres of the poses (city_T_ego, e.g. a run's
 // optimised trajectory; sweeps they do not cover are left out) to the surface evidence,
 // labelled as the road points are (two sweeps at a time, added in order), and its paint to the
-// crossing and lane-line evidence; then judges every boundary stretch, crossing and lane-line
+// crossing and lane-line evidence, unless its kerbs say its pose is off (SweepAlignment); then judges every boundary stretch, crossing and lane-line
 // stretch and finds the missing surfaces and crossings. progress(done, total) after each sweep; cancel stops between sweeps (the report
 // then covers what was added). Throws Error for an unreadable sweep file, naming it.
 MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, const PoseTrajectory& poses,

@@ -46,6 +46,7 @@ const char* toString(RunEvent::Kind kind) {
     case RunEvent::Kind::SkippedSweep: return "skipped-sweep";
     case RunEvent::Kind::MapChange: return "map-change";
     case RunEvent::Kind::MissedChange: return "missed-change";
+    case RunEvent::Kind::MisalignedSweeps: return "misaligned-sweeps";
   }
   return "?";
 }

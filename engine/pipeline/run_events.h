@@ -11,7 +11,7 @@ struct SkippedSweep;
 
 // A place in a run worth looking at, for the bench to jump to.
 struct RunEvent {
-  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep, MapChange, MissedChange };
+  enum class Kind { Rejected, Gated, ConstraintChange, Beyond3Sigma, SkippedSweep, MapChange, MissedChange, MisalignedSweeps };
   Kind kind = Kind::Rejected;
   // frame: the log's sweep index; a skipped sweep's keyframe is the one before it; a map change's
   // frame is the sweep that saw it best (a missed labelled change's: the sweep nearest to it), its
@@ -23,12 +23,16 @@ struct RunEvent {
 // Whether the event is a place in the log (the bench goes to its frame) rather than a keyframe's
 // match (the bench inspects the keyframe).
 inline bool isFrameEvent(RunEvent::Kind kind) {
-  return kind == RunEvent::Kind::SkippedSweep || kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange;
+  return kind == RunEvent::Kind::SkippedSweep || kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange ||
+         kind == RunEvent::Kind::MisalignedSweeps;
 }
 // Whether the event comes from a map check (and goes when the check is run again).
-inline bool isMapCheckEvent(RunEvent::Kind kind) { return kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange; }
+inline bool isMapCheckEvent(RunEvent::Kind kind) {
+  return kind == RunEvent::Kind::MapChange || kind == RunEvent::Kind::MissedChange || kind == RunEvent::Kind::MisalignedSweeps;
+}
 
-// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep", "map-change", "missed-change".
+// "rejected", "gated", "constraint-change", "beyond-3-sigma", "skipped-sweep", "map-change", "missed-change",
+// "misaligned-sweeps".
 const char* toString(RunEvent::Kind kind);
 
 // A run's events in frame order: rejected and gated priors, a change in what consecutive priors fix,

@@ -16,6 +16,7 @@ ImVec4 eventColor(RunEvent::Kind kind) {
     case RunEvent::Kind::Beyond3Sigma: return ImVec4(1.0f, 0.5f, 0.9f, 1.0f);
     case RunEvent::Kind::MapChange: return ImVec4(1.0f, 0.3f, 1.0f, 1.0f);
     case RunEvent::Kind::MissedChange: return ImVec4(0.1f, 0.95f, 0.95f, 1.0f);  // the changes layer's labelled cyan
+    case RunEvent::Kind::MisalignedSweeps: return ImVec4(1.0f, 0.6f, 0.2f, 1.0f);
     case RunEvent::Kind::SkippedSweep: break;
   }
   return ImVec4(0.7f, 0.7f, 0.7f, 1.0f);
@@ -37,6 +38,11 @@ void drawEvents(AppState& state) {
       else state.inspectKeyframe(e.keyframe);
     }
     ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.detail.c_str());  // the panel is narrower than most details
+    if (state.scrollToEvent && state.currentEvent == i) {
+      ImGui::SetScrollHereY(0.5f);
+      state.scrollToEvent = false;
+    }
   }
   ImGui::EndChild();
 }

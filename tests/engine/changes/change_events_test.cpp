@@ -34,5 +34,22 @@ TEST(ChangeEvents, AContradictedLaneLineIsOneEventAtItsBestFrame) {
             "lane 7 right line: paint 1.2 m to its right (40 of 300 road cells), as little on it as on the asphalt (12 of 400; confidence 0.90)");
 }
 
+TEST(ChangeEvents, SweepsLeftOutOneAfterAnotherAreOneEventAtTheFirst) {
+  MapChangeReport report;
+  SweepAlignment a;
+  a.kerbs = 31, a.alignedAtPose = 1, a.alignedShifted = 12, a.shift = {0.0, 4.0};
+  report.misaligned = {{263, a, false}, {266, a, true}, {269, a, true}, {300, a, false}};
+  const std::vector<RunEvent> events = mapChangeEvents(report);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, RunEvent::Kind::MisalignedSweeps);
+  EXPECT_EQ(events[0].frame, 263u);
+  EXPECT_EQ(events[0].detail,
+            "sweeps 263-269 left out (3 read): their kerbs meet the map shifted 4.0 m (first: 12 of 31 kerb points, 1 unshifted); the poses look off");
+  EXPECT_EQ(events[1].frame, 300u);
+  EXPECT_EQ(events[1].detail, "sweep 300 left out: its kerbs meet the map shifted 4.0 m (12 of 31 kerb points, 1 unshifted); its pose looks off");
+  EXPECT_TRUE(isMapCheckEvent(events[0].kind));
+  EXPECT_TRUE(isFrameEvent(events[0].kind));
+}
+
 }  // namespace
 }  // namespace hdprior

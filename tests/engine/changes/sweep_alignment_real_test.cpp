@@ -1,0 +1,43 @@
+// The real sweeps' kerbs on the real map: at the true pose they lie on its boundaries; with the pose
+// moved sideways they meet the map only under the opposite shift, and the check would leave the sweep out.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "engine/changes/sweep_alignment.h"
+#include "engine/geom/se2.h"
+#include "engine/io/argoverse_log.h"
+#include "engine/map/hd_map.h"
+#include "engine/pipeline/config.h"
+#include "test_data.h"
+
+namespace hdprior {
+namespace {
+
+TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFromAMovedOne) {
+  const ArgoverseLog log(test::sharedLog());
+  HdMapOptions mapOptions;
+  mapOptions.ndtCellSizes.clear();
+  const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
+  const ChangeOptions o;
+  for (size_t i = 0; i < log.sweepCount(); ++i) {
+    const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
+    const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
+    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), o);
+    SE3 moved = truth;
+    moved.translation() += truth.linear() * Eigen::Vector3d(0.0, 2.5, 0.0);
+    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), o);
+    std::printf("sweep %zu: %d kerb points, %d on the map at the true pose (best shift %.2f m: %d); moved 2.5 m left: %d on it, "
+                "%d shifted (%.2f, %.2f)\n",
+                i, a.kerbs, a.alignedAtPose, a.shift.norm(), a.alignedShifted, m.alignedAtPose, m.alignedShifted, m.shift.x(),
+                m.shift.y());
+    EXPECT_GE(a.alignedAtPose, 0.75 * a.kerbs);  // measured 22 of 26 and 20 of 25
+    EXPECT_FALSE(a.misaligned(o, 1000.0));
+    EXPECT_TRUE(m.misaligned(o, 1000.0));
+    EXPECT_FALSE(m.misaligned(o, 50.0)) << "after 50 m a pose is not 2.5 m off: that is the map";
+    EXPECT_NEAR(m.shift.y(), -2.5, 0.5);
+  }
+}
+
+}  // namespace
+}  // namespace hdprior

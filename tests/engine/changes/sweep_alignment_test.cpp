@@ -1,0 +1,74 @@
+// A sweep whose kerbs meet the map only under a shift: a pose that is off moves the kerbs of both
+// sides, a map change moves one polygon's; and the poses can be that far off only after a drive.
+#include "engine/changes/sweep_alignment.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/changes/synthetic_street.h"
+#include "engine/map/synthetic_maps.h"
+
+namespace hdprior {
+namespace {
+
+// Kerb points every 0.5 m along both kerbs of the straight street (y = +-5 m), x in [-20, 20].
+LabelledSweep kerbsOfTheStreet() {
+  LabelledSweep sweep;
+  for (double x = -20; x <= 20; x += 0.5)
+    for (double y : {-5.0, 5.0}) {
+      sweep.points.emplace_back(x, y, 0.0);
+      sweep.ground.push_back(1);
+      sweep.road.push_back(kCurbPoint);
+    }
+  return sweep;
+}
+
+SE3 at(double x, double y) {
+  SE3 pose = SE3::Identity();
+  pose.translation() = Eigen::Vector3d(x, y, 0);
+  return pose;
+}
+
+TEST(SweepAlignment, KerbsOnTheMapAtThePoseAreAligned) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 0), map.boundaryDistance(), ChangeOptions{});
+  EXPECT_EQ(a.kerbs, 162);
+  EXPECT_EQ(a.alignedAtPose, 162);
+  EXPECT_EQ(a.alignedShifted, 162);
+  EXPECT_LT(a.shift.norm(), 1e-9);
+  EXPECT_FALSE(a.misaligned(ChangeOptions{}, 500.0));
+}
+
+TEST(SweepAlignment, APoseOffSidewaysMovesBothKerbsAndIsMisalignedOnlyAfterADriveThatCouldLoseThatMuch) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const ChangeOptions o;
+  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 2.5), map.boundaryDistance(), o);
+  EXPECT_EQ(a.alignedAtPose, 0);
+  EXPECT_EQ(a.alignedShifted, 162);
+  EXPECT_NEAR(a.shift.y(), -2.5, 0.26);
+  EXPECT_TRUE(a.misaligned(o, 200.0)) << "3 % of 200 m is 6 m";
+  EXPECT_FALSE(a.misaligned(o, 50.0)) << "3 % of 50 m is 1.5 m: the map is off, not the pose";
+}
+
+TEST(SweepAlignment, AMovedBoundaryOnOneSideIsAMapChange) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 7.5)});
+  const ChangeOptions o;
+  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 0), map.boundaryDistance(), o);
+  EXPECT_EQ(a.alignedAtPose, 81);
+  EXPECT_LE(a.alignedShifted, 81) << "a shift lines up one side or the other, never both";
+  EXPECT_FALSE(a.misaligned(o, 500.0));
+}
+
+TEST(SweepAlignment, AFewKerbsSayNothing) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  LabelledSweep few;
+  for (double x : {-3.0, -1.0, 1.0, 3.0}) {
+    few.points.emplace_back(x, 5.0, 0.0), few.ground.push_back(1), few.road.push_back(kCurbPoint);
+    few.points.emplace_back(x, 0.0, 0.0), few.ground.push_back(1), few.road.push_back(kRoadPoint);
+  }
+  const SweepAlignment a = sweepAlignment(few, at(0, 2.5), map.boundaryDistance(), ChangeOptions{});
+  EXPECT_EQ(a.kerbs, 4);
+  EXPECT_FALSE(a.misaligned(ChangeOptions{}, 500.0));
+}
+
+}  // namespace
+}  // namespace hdprior
