@@ -122,21 +122,24 @@ RegistrationResult registerFeatures(const std::vector<Eigen::Vector3f>& planes, 
   solverOptions.num_threads = 1;
   solverOptions.logging_type = ceres::SILENT;
   solverOptions.minimizer_progress_to_stdout = false;
-  for (int round = 0; round < std::max(1, o.outerIterations); ++round) {
+  const int minRounds = std::max(1, o.outerIterations), maxRounds = std::max(minRounds, o.maxOuterIterations);
+  for (int round = 0; round < maxRounds; ++round) {
     double delta[6] = {0, 0, 0, 0, 0, 0};
     ceres::Problem problem(problemOptions);
     result.planeResiduals = addResiduals(problem, delta, planes, planeMap, result.mapTEgo, o);
     if (result.planeResiduals < 10) return result;  // too little overlap: keep the guess, covariance stays identity
     ceres::Solver::Summary summary;
     ceres::Solve(solverOptions, &problem, &summary);
-    const bool last = round + 1 == std::max(1, o.outerIterations);
+    const Eigen::Map<Eigen::Matrix<double, 6, 1>> step(delta);
+    const bool settled = step.head<3>().norm() < 0.01 && step.tail<3>().norm() < 0.05 * M_PI / 180.0;
+    const bool last = round + 1 == maxRounds || (round + 1 >= minRounds && settled);
     if (last) {
       int count = 0;
       result.covariance = covarianceAt(problem, count, result.rmsResidual);
     }
     result.mapTEgo = applyDelta(result.mapTEgo, delta);
-    const Eigen::Map<Eigen::Matrix<double, 6, 1>> step(delta);
-    if (!last && step.head<3>().norm() < 1e-4 && step.tail<3>().norm() < 1e-5) {
+    if (last) break;
+    if (step.head<3>().norm() < 1e-4 && step.tail<3>().norm() < 1e-5) {
       // Converged: one more round would re-associate the same pairs; take the covariance now.
       double zero[6] = {0, 0, 0, 0, 0, 0};
       ceres::Problem finalProblem(problemOptions);

@@ -1,5 +1,6 @@
 #include "engine/odom/odometry.h"
 
+#include <algorithm>
 #include <string>
 
 #include "engine/error.h"
@@ -16,6 +17,7 @@ RegistrationOptions startRegistration(const RegistrationOptions& ro, size_t fram
   if (framesSoFar != 1) return ro;
   RegistrationOptions wide = ro;
   wide.outerIterations = 3 * ro.outerIterations;
+  wide.maxOuterIterations = std::max(wide.outerIterations, ro.maxOuterIterations);
   wide.maxCorrespondence = 2.0 * ro.maxCorrespondence;
   return wide;
 }
@@ -108,6 +110,7 @@ const OdometryFrame& Odometry::registerSweep(const LidarSweep& sweep) {
       planes = planesFor(frame.sweepMotion);
       RegistrationOptions refine = ro;
       refine.outerIterations = 1;
+      refine.maxOuterIterations = 1;
       r = registerFeatures(planes, localMap_, r.mapTEgo, refine);
     }
     registered = r.mapTEgo;

@@ -20,6 +20,8 @@ std::vector<OptionField> optionFields(DeskewOptions& o) {
 std::vector<OptionField> optionFields(RegistrationOptions& o) {
   return {
       {"outer_iterations", &o.outerIterations, "[1, 100]", "", "re-association rounds of scan-to-map registration"},
+      {"max_outer_iterations", &o.maxOuterIterations, "[1, 100]", "",
+       "rounds at most: past outer_iterations, rounds go on while one still moves the pose 1 cm or 0.05 deg"},
       {"solver_iterations", &o.solverIterations, "[1, 1000]", "", "Ceres iterations per round"},
       {"huber_scale", &o.huberScale, "(0, 100]", "m", "robust loss scale of the point-to-plane residuals"},
       {"max_correspondence", &o.maxCorrespondence, "(0, 10]", "m", "nearest-neighbour gate of a correspondence"},

@@ -34,6 +34,9 @@ struct DeskewOptions {
 
 struct RegistrationOptions {
   int outerIterations = 2;          // re-association rounds
+  // Rounds go on past outerIterations while a round still moves the pose 1 cm or 0.05 deg (a
+  // constant-velocity guess in a sharp turn is degrees off, and each round gets part of the way).
+  int maxOuterIterations = 6;
   int solverIterations = 6;         // Ceres iterations per round
   double huberScale = 0.1;          // metres, robust loss
   double maxCorrespondence = 1.0;   // metres, nearest-neighbour gate
