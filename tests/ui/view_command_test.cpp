@@ -402,14 +402,25 @@ size_t redPixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   return n;
 }
 
+// Pixels within 6 of the events' colour of a constraint change (0.3, 0.65, 1.0).
+size_t constraintChangeBluePixels(const render::Image& image, int y0, int y1) {
+  size_t n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto p = image.pixel(x, y);
+      n += std::abs(int(p[0]) - 77) <= 6 && std::abs(int(p[1]) - 166) <= 6 && std::abs(int(p[2]) - 255) <= 6;
+    }
+  return n;
+}
+
 // The debugging bench: what each prior fixes in the report, Diagnostics plots drawn under the ATE
 // plot (the chi2 plot's red gate line), the run's events equal to what `hdprior run` writes in
-// keyframes.json, next-event going to the first event's frame, a bookmark.
+// keyframes.json (ticks on the timeline), next-event going to the first event's frame, a bookmark.
 TEST(ViewCommand, DebuggingBenchPlotsEventsAndBookmarks) {
   const SimulatedDrive drive = simulatedTownDrive("view_debugging_bench", 1, 7, 12.0);
   const fs::path dir = freshOutputDir("view_debugging_bench");
-  const fs::path before = dir / "before.png", after = dir / "after.png";
-  writeText(dir / "script.txt", "run\nwait 2\nscreenshot " + before.string() +
+  const fs::path start = dir / "start.png", before = dir / "before.png", after = dir / "after.png";
+  writeText(dir / "script.txt", "wait 2\nscreenshot " + start.string() + "\nrun\nwait 2\nscreenshot " + before.string() +
                                     "\nplot chi2 on\nplot sigma_lateral on\nplot error_lateral on\nplot score on\nplot score off\n"
                                     "plot score on\nevents\nnext-event\nbookmark kerb looks off\nreport\nwait 2\nscreenshot " +
                                     after.string() + "\n");
@@ -446,6 +457,9 @@ TEST(ViewCommand, DebuggingBenchPlotsEventsAndBookmarks) {
   const render::Image a = readPng(before), b = readPng(after);
   const int x0 = 310, x1 = a.width - 360, y0 = a.height - 88 - 192, y1 = a.height - 88;
   EXPECT_GT(redPixels(b, x0, y0, x1, y1), redPixels(a, x0, y0, x1, y1) + 100) << after;
+  // The timeline (the bottom 88 px) gains a tick per event: a constraint change's blue at least.
+  EXPECT_GE(constraintChangeBluePixels(a, a.height - 88, a.height), constraintChangeBluePixels(readPng(start), a.height - 88, a.height) + 5)
+      << before;
 }
 
 // Without an X server the window cannot open: one line naming GLFW, never a crash.

@@ -2,13 +2,34 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cinttypes>
+#include <vector>
 
 #include "engine/io/argoverse_log.h"
 #include "ui/app_state.h"
+#include "ui/panels/event_colors.h"
 #include "ui/panels/panel_layout.h"
 
 namespace hdprior::ui {
+namespace {
+
+// A tick under the frame slider (the last item drawn) at each event's frame, in its kind's colour.
+void drawEventTicks(const std::vector<RunEvent>& events, size_t count) {
+  if (count < 2 || events.empty()) return;
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  // Where ImGui's slider puts the grab's centre for the first and the last frame.
+  const float padding = 2.0f, width = b.x - a.x - 2 * padding;
+  const float grab = std::max(width / float(count), ImGui::GetStyle().GrabMinSize);
+  const float x0 = a.x + padding + grab / 2, x1 = b.x - padding - grab / 2;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (const RunEvent& e : events) {
+    const float x = x0 + (x1 - x0) * float(e.frame) / float(count - 1);
+    draw->AddLine(ImVec2(x, b.y - 6), ImVec2(x, b.y - 1), ImGui::GetColorU32(eventColor(e.kind)), 2.0f);
+  }
+}
+
+}  // namespace
 
 void drawTimelinePanel(AppState& state) {
   const ImGuiIO& io = ImGui::GetIO();
@@ -34,6 +55,7 @@ void drawTimelinePanel(AppState& state) {
   int slider = int(frame);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderInt("##frame", &slider, 0, count > 0 ? int(count) - 1 : 0, "frame %d")) state.goToFrame(slider);
+  drawEventTicks(state.bench().analysis().events, count);
 
   const auto& timestamps = state.log().sweepTimestamps();
   const int64_t ns = state.frame().timestampNs;
