@@ -25,7 +25,8 @@ std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryS
   return b;
 }
 
-// "sweeps 263-368 left out (27 read): their kerbs meet the map shifted 4.0 m (12 of 31 kerb points, 1 unshifted); the poses look off"
+// "sweeps 263-368 left out (27 read): their kerbs meet the map shifted 4.0 m (first: 12 of 31 kerb points, 1
+// unshifted); the poses look off", or for one sweep "sweep 300 left out: its kerbs ...; its pose looks off"
 std::string misalignedDetail(const std::vector<MisalignedSweep>& sweeps, size_t first, size_t last) {
   const SweepAlignment& a = sweeps[first].alignment;
   char b[240];
