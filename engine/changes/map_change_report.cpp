@@ -109,7 +109,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
     const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k].index);
     Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}, {}};
     out.paint = findSweepPaint(*sweep, out.sweep, options);
-    out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), options);
+    out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), map.vectorMap().drivableAreas, options);
     return out;
   };
   auto add = [&](size_t k, const Labelled& labelled) {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
+#include "engine/geom/polygon2d.h"
 #include "engine/geom/se2.h"
 #include "engine/lidar/road_points.h"
 #include "engine/map/boundary_distance.h"
@@ -12,11 +14,41 @@ namespace hdprior {
 
 bool SweepAlignment::misaligned(const ChangeOptions& o, double driven) const {
   return alignedShifted >= 2 * o.minSamples && alignedShifted >= 2 * std::max(alignedAtPose, 1) && shift.norm() > o.tolerance &&
-         shift.norm() <= o.poseErrorPerMetre * driven;
+         polygonsShifted >= 2 && shift.norm() <= o.poseErrorPerMetre * driven;
 }
 
+namespace {
+
+// How many of the areas have 2 or more of the points within `near` of their boundary (each point
+// counted for the nearest boundary).
+int polygonsHolding(const std::vector<Eigen::Vector2d>& points, const std::vector<DrivableArea>& areas, double near) {
+  if (points.empty()) return 0;
+  Eigen::AlignedBox2d box;
+  for (const Eigen::Vector2d& p : points) box.extend(p);
+  box.min().array() -= near, box.max().array() += near;
+  std::vector<Ring2> rings;
+  for (const DrivableArea& a : areas) {
+    Eigen::AlignedBox2d b;
+    for (const Eigen::Vector3d& v : a.areaBoundary) b.extend(v.head<2>());
+    if (b.intersects(box)) rings.push_back(ringOf(a.areaBoundary));
+  }
+  std::vector<int> count(rings.size(), 0);
+  for (const Eigen::Vector2d& p : points) {
+    double best = near;
+    int at = -1;
+    for (size_t k = 0; k < rings.size(); ++k) {
+      const double d = polylineDistance(std::span<const Eigen::Vector2d>(&p, 1), rings[k], true);
+      if (d <= best) best = d, at = int(k);
+    }
+    if (at >= 0) ++count[size_t(at)];
+  }
+  return int(std::count_if(count.begin(), count.end(), [](int n) { return n >= 2; }));
+}
+
+}  // namespace
+
 SweepAlignment sweepAlignment(const LabelledSweep& sweep, const SE3& cityTEgo, const BoundaryDistance& distance,
-                              const ChangeOptions& options) {
+                              const std::vector<DrivableArea>& areas, const ChangeOptions& options) {
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(yawOf(cityTEgo)).toRotationMatrix();
   const Eigen::Vector2d t = cityTEgo.translation().head<2>();
   std::vector<Eigen::Vector2d> kerbs;  // city frame, at the pose
@@ -38,6 +70,11 @@ SweepAlignment sweepAlignment(const LabelledSweep& sweep, const SE3& cityTEgo, c
       const int n = aligned(r * shift);
       if (n > a.alignedShifted || (n == a.alignedShifted && shift.norm() < a.shift.norm())) a.alignedShifted = n, a.shift = shift;
     }
+  if (a.shift.norm() <= options.tolerance) return a;
+  std::vector<Eigen::Vector2d> lined;
+  for (const Eigen::Vector2d& k : kerbs)
+    if (std::abs(distance.cellDistance(k + r * a.shift)) <= options.cell) lined.push_back(k + r * a.shift);
+  a.polygonsShifted = polygonsHolding(lined, areas, options.cell);
   return a;
 }
 

@@ -3,6 +3,7 @@
 
 #include "engine/changes/change_options.h"
 #include "engine/geom/se3.h"
+#include "engine/io/vector_map.h"
 #include "engine/lidar/sweep_road_points.h"
 
 namespace hdprior {
@@ -12,15 +13,17 @@ class BoundaryDistance;
 // Whether a sweep's kerbs lie on the map's drivable-area boundary at its pose. A map change moves
 // one polygon's boundary; a pose that is off moves every kerb in view, so a shift of the whole
 // sweep lines them up again. Such a sweep says nothing about the map that its pose can be trusted
-// for: the check leaves it out.
+// for: the check leaves it out. One polygon alone in view cannot tell (it may be the one that moved).
 struct SweepAlignment {
   int kerbs = 0;           // kerb points of the sweep within the road points' range
   int alignedAtPose = 0;   // of them within ChangeOptions::cell of a mapped boundary
   int alignedShifted = 0;  // ... the most under a shift of the sweep within ChangeOptions::reach
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // that shift, levelled ego frame, metres
+  int polygonsShifted = 0;  // drivable areas whose boundary holds 2 or more of the kerbs the shift lines up
 
   // Twice the kerbs line up under a shift beyond the tolerance (at least 2 x minSamples of them),
-  // and the poses can be that far off after `driven` metres (ChangeOptions::poseErrorPerMetre).
+  // on two polygons or more, and the poses can be that far off after `driven` metres
+  // (ChangeOptions::poseErrorPerMetre).
   bool misaligned(const ChangeOptions& options, double driven) const;
 };
 
@@ -34,6 +37,6 @@ struct MisalignedSweep {
 // `sweep` is labelSweep's (levelled with the pose's roll and pitch); the shifts are tried on a grid
 // of ChangeOptions::cell.
 SweepAlignment sweepAlignment(const LabelledSweep& sweep, const SE3& cityTEgo, const BoundaryDistance& distance,
-                              const ChangeOptions& options);
+                              const std::vector<DrivableArea>& areas, const ChangeOptions& options);
 
 }  // namespace hdprior

@@ -23,14 +23,14 @@ TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFro
   for (size_t i = 0; i < log.sweepCount(); ++i) {
     const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
     const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
-    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), o);
+    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), map.vectorMap().drivableAreas, o);
     SE3 moved = truth;
     moved.translation() += truth.linear() * Eigen::Vector3d(0.0, 2.5, 0.0);
-    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), o);
+    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), map.vectorMap().drivableAreas, o);
     std::printf("sweep %zu: %d kerb points, %d on the map at the true pose (best shift %.2f m: %d); moved 2.5 m left: %d on it, "
-                "%d shifted (%.2f, %.2f)\n",
+                "%d shifted (%.2f, %.2f) on %d polygons\n",
                 i, a.kerbs, a.alignedAtPose, a.shift.norm(), a.alignedShifted, m.alignedAtPose, m.alignedShifted, m.shift.x(),
-                m.shift.y());
+                m.shift.y(), m.polygonsShifted);
     EXPECT_GE(a.alignedAtPose, 0.75 * a.kerbs);  // measured 22 of 26 and 20 of 25
     EXPECT_FALSE(a.misaligned(o, 1000.0));
     EXPECT_TRUE(m.misaligned(o, 1000.0));

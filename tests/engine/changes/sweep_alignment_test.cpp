@@ -1,5 +1,6 @@
 // A sweep whose kerbs meet the map only under a shift: a pose that is off moves the kerbs of both
-// sides, a map change moves one polygon's; and the poses can be that far off only after a drive.
+// sides and of every polygon in view, a map change moves one polygon's; and the poses can be that
+// far off only after a drive.
 #include "engine/changes/sweep_alignment.h"
 
 #include <gtest/gtest.h>
@@ -28,9 +29,16 @@ SE3 at(double x, double y) {
   return pose;
 }
 
+// The street as two polygons meeting at x = 0, both in view.
+HdMap twoPolygonStreet() { return test::streetMap({test::rectangle(-100, -5, 0, 5), test::rectangle(0, -5, 100, 5)}); }
+
+SweepAlignment alignment(const HdMap& map, const LabelledSweep& sweep, const SE3& pose) {
+  return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, ChangeOptions{});
+}
+
 TEST(SweepAlignment, KerbsOnTheMapAtThePoseAreAligned) {
-  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
-  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 0), map.boundaryDistance(), ChangeOptions{});
+  const HdMap map = twoPolygonStreet();
+  const SweepAlignment a = alignment(map, kerbsOfTheStreet(), at(0, 0));
   EXPECT_EQ(a.kerbs, 162);
   EXPECT_EQ(a.alignedAtPose, 162);
   EXPECT_EQ(a.alignedShifted, 162);
@@ -39,33 +47,44 @@ TEST(SweepAlignment, KerbsOnTheMapAtThePoseAreAligned) {
 }
 
 TEST(SweepAlignment, APoseOffSidewaysMovesBothKerbsAndIsMisalignedOnlyAfterADriveThatCouldLoseThatMuch) {
-  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const HdMap map = twoPolygonStreet();
   const ChangeOptions o;
-  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 2.5), map.boundaryDistance(), o);
+  const SweepAlignment a = alignment(map, kerbsOfTheStreet(), at(0, 2.5));
   EXPECT_EQ(a.alignedAtPose, 0);
   EXPECT_EQ(a.alignedShifted, 162);
   EXPECT_NEAR(a.shift.y(), -2.5, 0.26);
+  EXPECT_EQ(a.polygonsShifted, 2);
   EXPECT_TRUE(a.misaligned(o, 200.0)) << "3 % of 200 m is 6 m";
   EXPECT_FALSE(a.misaligned(o, 50.0)) << "3 % of 50 m is 1.5 m: the map is off, not the pose";
 }
 
 TEST(SweepAlignment, AMovedBoundaryOnOneSideIsAMapChange) {
-  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 7.5)});
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 0, 7.5), test::rectangle(0, -5, 100, 7.5)});
   const ChangeOptions o;
-  const SweepAlignment a = sweepAlignment(kerbsOfTheStreet(), at(0, 0), map.boundaryDistance(), o);
+  const SweepAlignment a = alignment(map, kerbsOfTheStreet(), at(0, 0));
   EXPECT_EQ(a.alignedAtPose, 81);
   EXPECT_LE(a.alignedShifted, 81) << "a shift lines up one side or the other, never both";
   EXPECT_FALSE(a.misaligned(o, 500.0));
 }
 
+TEST(SweepAlignment, AShiftedPolygonThatFillsTheViewIsAMapChange) {
+  // One polygon drawn 2.5 m off: its two kerbs line up under one shift, as with a pose 2.5 m off,
+  // but nothing else in view says which moved.
+  const HdMap map = test::streetMap({test::rectangle(-100, -7.5, 100, 2.5)});
+  const SweepAlignment a = alignment(map, kerbsOfTheStreet(), at(0, 0));
+  EXPECT_EQ(a.alignedShifted, 162);
+  EXPECT_EQ(a.polygonsShifted, 1);
+  EXPECT_FALSE(a.misaligned(ChangeOptions{}, 500.0));
+}
+
 TEST(SweepAlignment, AFewKerbsSayNothing) {
-  const HdMap map = test::streetMap({test::rectangle(-100, -5, 100, 5)});
+  const HdMap map = twoPolygonStreet();
   LabelledSweep few;
   for (double x : {-3.0, -1.0, 1.0, 3.0}) {
     few.points.emplace_back(x, 5.0, 0.0), few.ground.push_back(1), few.road.push_back(kCurbPoint);
     few.points.emplace_back(x, 0.0, 0.0), few.ground.push_back(1), few.road.push_back(kRoadPoint);
   }
-  const SweepAlignment a = sweepAlignment(few, at(0, 2.5), map.boundaryDistance(), ChangeOptions{});
+  const SweepAlignment a = alignment(map, few, at(0, 2.5));
   EXPECT_EQ(a.kerbs, 4);
   EXPECT_FALSE(a.misaligned(ChangeOptions{}, 500.0));
 }
