@@ -25,7 +25,7 @@ struct ChangeOptions {
   double poseErrorPerMetre = 0.03;
   // Road paint (crossings): measured on the real sweeps, it stands out from asphalt only this near the sensor.
   double paintRange = 12.0;
-  double paintContrast = 1.7;  // a bright return: this many times the median of the sweep's near ground
+  double paintContrast = 1.7;  // a bright return: this many times the median of its ring's near road
   int paintRunPoints = 3;      // consecutive bright returns of a ring that make a paint run ...
   double paintRunGap = 0.15;   // ... no farther apart than this (metres)
   // Crossings: the road near the sensor in cells this wide (metres); a cell with a paint run in it is painted.

@@ -8,6 +8,8 @@ namespace hdprior {
 
 namespace {
 
+constexpr size_t kRingPointsForMedian = 50;  // fewer road points of a ring take the sweep's median
+
 uint8_t medianIntensity(const LidarSweep& sweep, const std::vector<size_t>& near) {
   std::vector<uint8_t> values;
   values.reserve(near.size());
@@ -55,8 +57,9 @@ SweepPaint findSweepPaint(const LidarSweep& sweep, const LabelledSweep& labelled
     rings[sweep.points[i].laserNumber].push_back(i);
   }
   for (auto& [laser, ring] : rings) {
-    // A near ring meets the road at a steeper angle and returns more from plain asphalt.
-    const double threshold = options.paintContrast * std::max(sweepMedian, medianIntensity(sweep, ring));
+    // Each ring against its own asphalt: a near ring meets the road at a steeper angle and returns
+    // more from it, a far one less (against the sweep's median, paint 10 m off went unseen).
+    const double threshold = options.paintContrast * (ring.size() >= kRingPointsForMedian ? medianIntensity(sweep, ring) : sweepMedian);
     for (size_t i : ring) bright[i] = sweep.points[i].intensity > threshold;
     std::sort(ring.begin(), ring.end(), [&](size_t a, size_t b) { return azimuth[a] < azimuth[b]; });
     addRuns(ring, bright, labelled, options, paint.runs);

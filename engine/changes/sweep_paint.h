@@ -24,7 +24,8 @@ struct SweepPaint {
 // The road points (ground the road walk reached: sidewalks and verges are often brighter than
 // asphalt) within options.paintRange, and the runs among them: options.paintRunPoints or more
 // returns of one ring, consecutive in azimuth, each brighter than options.paintContrast times the
-// median intensity of those road points and of the ring's, and within options.paintRunGap of the last.
+// median intensity of the ring's road points (of all of them for a ring with few), and within
+// options.paintRunGap of the last.
 // `labelled` is labelSweep of `sweep` (same points, same order).
 SweepPaint findSweepPaint(const LidarSweep& sweep, const LabelledSweep& labelled, const ChangeOptions& options);
 

@@ -67,7 +67,7 @@ void drawLidar(Draw& draw, SceneVariation& v) {
 
 // Around the paint and asphalt of the real sweep (docs/simulator.md): within 8 m, 28 % of the road
 // returns on a mapped lane line and 13 % of the others pass the paint check's 1.7x the median, and
-// 13 runs of bright returns a sweep lie off the mapped lines.
+// 14 runs of bright returns a sweep lie off the mapped lines.
 void drawRoadSurface(Draw& draw, RoadsideOptions& r) {
   r.paintContrast = draw(1.4, 2.0);
   r.paintWear = draw(0.1, 0.4);

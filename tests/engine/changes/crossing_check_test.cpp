@@ -172,27 +172,43 @@ TEST(CrossingCheck, AsphaltPatchesAreTheLogsBackgroundNotACrossing) {
   }
 }
 
+// A road return `range` metres from the lidar at `azimuth`, on ring `ring`.
+void addRoadReturn(LidarSweep& sweep, LabelledSweep& labelled, double range, double azimuth, uint8_t intensity, uint8_t ring) {
+  const Eigen::Vector3d p(range * std::cos(azimuth), range * std::sin(azimuth), -1.8);
+  sweep.points.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, ring, 0});
+  labelled.points.push_back(p);
+  labelled.ground.push_back(1);
+  labelled.road.push_back(1);
+}
+
 TEST(SweepPaint, ARunIsThreeBrightReturnsOfOneRingInARow) {
   LidarSweep sweep;
   LabelledSweep labelled;
   // Ring 5 at 8 m, a return every 2 cm of arc; intensity 6, bright (40) from the 50th to the 54th.
   // Ring 6 has two bright returns only; a point beyond the range is never counted.
-  auto add = [&](double range, double azimuth, uint8_t intensity, uint8_t ring) {
-    const Eigen::Vector3d p(range * std::cos(azimuth), range * std::sin(azimuth), -1.8);
-    sweep.points.push_back({float(p.x()), float(p.y()), float(p.z()), intensity, ring, 0});
-    labelled.points.push_back(p);
-    labelled.ground.push_back(1);
-    labelled.road.push_back(1);
-  };
-  for (int k = 0; k < 100; ++k) add(8.0, k * 0.0025, k >= 50 && k < 55 ? 40 : 6, 5);
-  for (int k = 0; k < 100; ++k) add(10.0, k * 0.002, k == 10 || k == 11 ? 40 : 6, 6);
-  add(20.0, 0.0, 40, 7);
+  for (int k = 0; k < 100; ++k) addRoadReturn(sweep, labelled, 8.0, k * 0.0025, k >= 50 && k < 55 ? 40 : 6, 5);
+  for (int k = 0; k < 100; ++k) addRoadReturn(sweep, labelled, 10.0, k * 0.002, k == 10 || k == 11 ? 40 : 6, 6);
+  addRoadReturn(sweep, labelled, 20.0, 0.0, 40, 7);
   const SweepPaint paint = findSweepPaint(sweep, labelled, ChangeOptions{});
   EXPECT_EQ(paint.road.size(), 200u);
   ASSERT_EQ(paint.runs.size(), 1u);
   EXPECT_EQ(paint.runs[0].points, 5);
   EXPECT_NEAR(paint.runs[0].centre.norm(), 8.0, 1e-3);
   EXPECT_NEAR(std::atan2(paint.runs[0].centre.y(), paint.runs[0].centre.x()), 52 * 0.0025, 1e-3);
+}
+
+// A far ring meets the road at a grazing angle and returns less from asphalt and paint alike:
+// paint twice as bright as its asphalt is paint, though the near rings' asphalt is as bright as it.
+TEST(SweepPaint, EachRingIsReadAgainstItsOwnAsphalt) {
+  LidarSweep sweep;
+  LabelledSweep labelled;
+  for (int ring = 0; ring < 3; ++ring)
+    for (int k = 0; k < 200; ++k) addRoadReturn(sweep, labelled, 4.0 + ring, k * 0.005, k == 100 ? 21 : 12, uint8_t(ring));
+  for (int k = 0; k < 200; ++k) addRoadReturn(sweep, labelled, 10.0, k * 0.002, k >= 100 && k < 110 ? 12 : 6, 9);
+  const SweepPaint paint = findSweepPaint(sweep, labelled, ChangeOptions{});
+  ASSERT_EQ(paint.runs.size(), 1u);  // the near rings' bright flecks are single returns below 1.7x their asphalt
+  EXPECT_EQ(paint.runs[0].points, 10);
+  EXPECT_NEAR(paint.runs[0].centre.norm(), 10.0, 1e-3);
 }
 
 }  // namespace

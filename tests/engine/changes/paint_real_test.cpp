@@ -21,7 +21,7 @@ TEST(PaintReal, LanePaintIsFaintAndAsphaltIsFleckedWithinEightMetres) {
   EXPECT_NEAR(s.onLineBrightShare(), 0.28, 0.05);  // measured 0.282 of 124
   EXPECT_NEAR(s.asphaltBrightShare(), 0.134, 0.02);  // measured 0.134 of 5,026
   EXPECT_NEAR(s.runsOnLinesPerSweep(), 2.5, 1.0);
-  EXPECT_NEAR(s.runsElsewherePerSweep(), 13.0, 3.0);
+  EXPECT_NEAR(s.runsElsewherePerSweep(), 14.0, 3.0);  // measured 13.0 against the sweep's median, 14.0 against each ring's
   // Paint is brighter than asphalt, but not by much: a run lies off the lines 5 times as often as on them.
   EXPECT_GT(s.onLineBrightShare(), 1.5 * s.asphaltBrightShare());
   EXPECT_GT(s.runsElsewherePerSweep(), 3.0 * s.runsOnLinesPerSweep());

@@ -27,7 +27,7 @@ TEST(SimulatedPaint, AFamilysPaintAndAsphaltAreWithinAFactorOfTwoOfTheRealSweeps
                 s.runsOnLinesPerSweep(), s.runsElsewherePerSweep());
     ASSERT_EQ(s.sweeps, 5u);
     ASSERT_GT(s.onLine, 100);
-    // The real sweep: 0.28, 0.134, 13 runs off the lines a sweep.
+    // The real sweep: 0.28, 0.134, 14 runs off the lines a sweep.
     EXPECT_GT(s.onLineBrightShare(), 0.28 / 2);
     EXPECT_LT(s.onLineBrightShare(), 0.28 * 2);
     EXPECT_GT(s.asphaltBrightShare(), 0.134 / 4) << "the flecks of real asphalt are mostly single returns; the patches are runs";
