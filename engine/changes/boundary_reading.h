@@ -13,6 +13,7 @@ struct BoundaryReading {
     Unobserved,  // too little seen on one side to place an edge
     Edge,        // the road ends at `offset` metres outwards of the map's boundary (negative: inwards)
     Open,        // the road goes on beyond the reach outwards: surface the map lacks
+    AcrossGap,   // the road goes on across a gap in the map, `offset` metres wide, to another drivable area
   };
   Kind kind = Kind::Unobserved;
   double offset = 0.0;       // metres along the outward normal (Edge; the reach for Open)

@@ -25,12 +25,29 @@ struct Reading {
 };
 
 bool contradicts(const BoundaryReading& r, const ChangeOptions& o) {
-  return r.kind == BoundaryReading::Kind::Edge && std::abs(r.offset) > o.tolerance;
+  return (r.kind == BoundaryReading::Kind::Edge || r.kind == BoundaryReading::Kind::AcrossGap) && std::abs(r.offset) > o.tolerance;
 }
 
-std::string evidenceOf(double offset, bool contradicted, const ChangeOptions& o) {
+std::string evidenceOf(double offset, bool contradicted, bool acrossGap) {
   if (!contradicted) return "kerb_offset";
+  if (acrossGap) return "road_across_gap";
   return offset > 0 ? "road_beyond_boundary" : "kerb_inside";
+}
+
+// Where the map's drivable area begins again outwards of a sample, within the reach; NaN if it does not.
+double drivableResumes(const BoundarySample& s, const BoundaryDistance& drivableDistance, const ChangeOptions& o) {
+  for (double t = o.cell / 2; t <= o.reach; t += o.cell / 2)
+    if (drivableDistance.distance(s.point + t * s.normal) < 0.0) return t;
+  return NAN;
+}
+
+// A narrowed polygon leaves a gap to its neighbour that the road goes on across: the road the
+// lidar saw runs past the boundary as far as the map's next drivable area at least.
+BoundaryReading acrossGap(BoundaryReading r, const BoundarySample& s, const BoundaryDistance& drivableDistance, const ChangeOptions& o) {
+  if (r.kind != BoundaryReading::Kind::Open) return r;
+  const double resumes = drivableResumes(s, drivableDistance, o);
+  if (std::isfinite(resumes)) r.kind = BoundaryReading::Kind::AcrossGap, r.offset = resumes;
+  return r;
 }
 
 BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1, const std::vector<Reading>& readings,
@@ -41,6 +58,7 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   s.line = boundaryBetween(area.areaBoundary, a0, a1);
   s.samples = int(readings.size());
   std::vector<double> observed, against;
+  int againstAcrossGap = 0;
   double ground = 0;
   int groundCount = 0;
   for (const Reading& r : readings) {
@@ -52,7 +70,7 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
     }
     ++s.observed;
     observed.push_back(b.offset);
-    if (contradicts(b, o)) against.push_back(b.offset);
+    if (contradicts(b, o)) against.push_back(b.offset), againstAcrossGap += b.kind == BoundaryReading::Kind::AcrossGap;
     s.curbPoints += b.curbPoints;
     if (std::isfinite(b.groundOffset)) ground += b.groundOffset, ++groundCount;
     if (b.firstFrame >= 0 && (s.firstFrame < 0 || b.firstFrame < s.firstFrame)) s.firstFrame = b.firstFrame;
@@ -75,7 +93,7 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   }
   s.verdict = contradicted ? MapVerdict::Contradicted : MapVerdict::Consistent;
   s.offset = median(contradicted ? against : observed);
-  s.evidence = evidenceOf(s.offset, contradicted, o);
+  s.evidence = evidenceOf(s.offset, contradicted, 2 * againstAcrossGap > s.contradicted);
   s.confidence = contradicted ? share * saturation(s.contradicted, o.minSamples)
                               : (1.0 - share) * saturation(s.observed - s.contradicted, o.minSamples);
   return s;
@@ -95,7 +113,7 @@ std::vector<BoundaryStretch> checkBoundary(const DrivableArea& area, const Surfa
     if (!(std::abs(inside) <= options.seamDepth)) continue;  // a seam, or outside the distance field
     onBoundary[k] = true;
     if (!evidence.cellAt(s.point)) continue;
-    byStretch[k].push_back({s, readBoundary(evidence, s, options)});
+    byStretch[k].push_back({s, acrossGap(readBoundary(evidence, s, options), s, drivableDistance, options)});
   }
   std::vector<BoundaryStretch> out;
   for (int k = 0; k < stretches; ++k) {

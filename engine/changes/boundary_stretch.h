@@ -25,7 +25,7 @@ struct BoundaryStretch {
   // The evidence: where the lidar's road edge lies, metres outwards of the map's boundary
   // (median over the contradicting samples, else over the observed ones), and what it is.
   double offset = 0.0;
-  std::string evidence;  // "kerb_offset" (consistent), "road_beyond_boundary", "kerb_inside", "road_continues" or ""
+  std::string evidence;  // "kerb_offset" (consistent), "road_beyond_boundary", "road_across_gap", "kerb_inside", "road_continues" or ""
   int curbPoints = 0;
   double groundOffset = 0.0;  // lidar ground minus the ground-height raster, mean, metres (NaN: none)
   int firstFrame = -1, bestFrame = -1;

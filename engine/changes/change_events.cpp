@@ -20,8 +20,13 @@ std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryS
   }
   char b[200];
   if (!best) return "";
-  std::snprintf(b, sizeof b, "drivable area %lld: kerb %.1f m %s its boundary, %d stretch%s (confidence %.2f)", (long long)v.id,
-                  std::abs(best->offset), best->offset > 0 ? "outside" : "inside", count, count == 1 ? "" : "es", v.confidence);
+  char what[80];
+  if (best->evidence == "road_across_gap")
+    std::snprintf(what, sizeof what, "road across a %.1f m gap to the next area", best->offset);
+  else
+    std::snprintf(what, sizeof what, "kerb %.1f m %s its boundary", std::abs(best->offset), best->offset > 0 ? "outside" : "inside");
+  std::snprintf(b, sizeof b, "drivable area %lld: %s, %d stretch%s (confidence %.2f)", (long long)v.id, what, count,
+                count == 1 ? "" : "es", v.confidence);
   return b;
 }
 

@@ -34,6 +34,22 @@ TEST(ChangeEvents, AContradictedLaneLineIsOneEventAtItsBestFrame) {
             "lane 7 right line: paint 1.2 m to its right (40 of 300 road cells), as little on it as on the asphalt (12 of 400; confidence 0.90)");
 }
 
+// A contradicted drivable area says what its most confident stretch saw: a kerb off its boundary,
+// or road going on across a gap to the next polygon.
+TEST(ChangeEvents, AContradictedDrivableAreaSaysWhatItsSurestStretchSaw) {
+  MapChangeReport report;
+  report.drivableAreas = {{3, MapVerdict::Contradicted, 0.8, 0, 12}, {4, MapVerdict::Contradicted, 0.7, 0, 20}};
+  BoundaryStretch kerb, gap;
+  kerb.areaId = 3, kerb.verdict = MapVerdict::Contradicted, kerb.offset = 2.1, kerb.confidence = 0.8, kerb.evidence = "road_beyond_boundary";
+  gap.areaId = 4, gap.verdict = MapVerdict::Contradicted, gap.offset = 2.5, gap.confidence = 0.7, gap.evidence = "road_across_gap";
+  report.stretches = {kerb, gap, gap};
+  const std::vector<RunEvent> events = mapChangeEvents(report);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].detail, "drivable area 3: kerb 2.1 m outside its boundary, 1 stretch (confidence 0.80)");
+  EXPECT_EQ(events[1].detail, "drivable area 4: road across a 2.5 m gap to the next area, 2 stretches (confidence 0.70)");
+  EXPECT_EQ(events[1].frame, 20u);
+}
+
 TEST(ChangeEvents, SweepsLeftOutOneAfterAnotherAreOneEventAtTheFirst) {
   MapChangeReport report;
   SweepAlignment a;

@@ -82,6 +82,33 @@ TEST(MapChangeReport, WhereTheWalkStoppedShortOfTheBoundaryWithoutAKerbNothingIs
   for (const BoundaryStretch& s : judged(r, 1)) EXPECT_NE(s.verdict, MapVerdict::Contradicted) << "stretch " << s.index;
 }
 
+// The stretches across the gap between the street's two polygons (x = 0 and x = `gap`), with a verdict.
+std::vector<BoundaryStretch> acrossTheGap(double gap) {
+  const HdMap map = test::streetMap({test::rectangle(-100, -5, 0, 5), test::rectangle(gap, -5, 100, 5)});
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(test::straightStreet), map, ChangeOptions{});
+  std::vector<BoundaryStretch> out;
+  for (int64_t id : {1, 2})
+    for (const BoundaryStretch& s : judged(r, id))
+      if (std::abs(s.line.front().x() - (id == 1 ? 0.0 : gap)) < 0.01 && std::abs(s.line.back().x() - s.line.front().x()) < 0.01)
+        out.push_back(s);
+  return out;
+}
+
+TEST(MapChangeReport, RoadAcrossAGapBetweenTwoPolygonsContradictsBothSides) {
+  // A narrowed polygon leaves a gap to its neighbour: the road goes on across it.
+  const std::vector<BoundaryStretch> wide = acrossTheGap(2.5);
+  ASSERT_EQ(wide.size(), 2u);
+  for (const BoundaryStretch& s : wide) {
+    EXPECT_EQ(s.verdict, MapVerdict::Contradicted) << "area " << s.areaId;
+    EXPECT_EQ(s.evidence, "road_across_gap");
+    EXPECT_NEAR(s.offset, 2.5, 0.3);
+  }
+  // A gap within the tolerance is the map's error.
+  const std::vector<BoundaryStretch> narrow = acrossTheGap(1.0);
+  ASSERT_EQ(narrow.size(), 2u);
+  for (const BoundaryStretch& s : narrow) EXPECT_EQ(s.verdict, MapVerdict::Consistent) << "area " << s.areaId;
+}
+
 TEST(MapChangeReport, RoadTheMapLacksIsAMissingSurfaceWithItsOutline) {
   // A side street 6 m wide leaves northwards at x in [-3, 3]; the map has only the street.
   auto world = [](double x, double y) {
