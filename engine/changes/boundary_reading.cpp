@@ -87,6 +87,7 @@ void describe(BoundaryReading& r, const Profile& p, int at) {
   r.curbPoints = sum.curb;
   r.firstFrame = sum.firstFrame;
   r.bestFrame = sum.bestFrame;
+  r.nearestView = sum.bestRange;
   SurfaceCell all;
   for (const SurfaceCell& c : p.cells) accumulate(all, c);
   r.groundOffset = all.groundOffsetCount > 0 ? all.groundOffsetSum / float(all.groundOffsetCount) : NAN;

@@ -20,6 +20,7 @@ struct BoundaryReading {
   int curbPoints = 0;        // kerb points the walks ended at, near the edge
   float groundOffset = NAN;  // mean lidar ground minus ground-height raster along the profile, metres
   int firstFrame = -1, bestFrame = -1;
+  float nearestView = 1e9f;  // metres: the nearest the lidar came to the road's edge here
 };
 
 // Reads the road's edge along the sample's normal in the evidence: walking outwards over road

@@ -59,6 +59,7 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   s.samples = int(readings.size());
   std::vector<double> observed, against;
   int againstAcrossGap = 0;
+  double nearestAgainst = 1e9, nearestObserved = 1e9;
   double ground = 0;
   int groundCount = 0;
   for (const Reading& r : readings) {
@@ -68,9 +69,11 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
       ++s.open;
       continue;
     }
+    if (contradicts(b, o) && b.nearestView > o.edgeRange) continue;
     ++s.observed;
     observed.push_back(b.offset);
-    if (contradicts(b, o)) against.push_back(b.offset), againstAcrossGap += b.kind == BoundaryReading::Kind::AcrossGap;
+    if (contradicts(b, o)) against.push_back(b.offset), againstAcrossGap += b.kind == BoundaryReading::Kind::AcrossGap, nearestAgainst = std::min<double>(nearestAgainst, b.nearestView);
+    nearestObserved = std::min<double>(nearestObserved, b.nearestView);
     s.curbPoints += b.curbPoints;
     if (std::isfinite(b.groundOffset)) ground += b.groundOffset, ++groundCount;
     if (b.firstFrame >= 0 && (s.firstFrame < 0 || b.firstFrame < s.firstFrame)) s.firstFrame = b.firstFrame;
@@ -94,6 +97,7 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   s.verdict = contradicted ? MapVerdict::Contradicted : MapVerdict::Consistent;
   s.offset = median(contradicted ? against : observed);
   s.evidence = evidenceOf(s.offset, contradicted, 2 * againstAcrossGap > s.contradicted);
+  s.nearestView = contradicted ? nearestAgainst : nearestObserved;
   s.confidence = contradicted ? share * saturation(s.contradicted, o.minSamples)
                               : (1.0 - share) * saturation(s.observed - s.contradicted, o.minSamples);
   return s;

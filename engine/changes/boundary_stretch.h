@@ -29,6 +29,7 @@ struct BoundaryStretch {
   int curbPoints = 0;
   double groundOffset = 0.0;  // lidar ground minus the ground-height raster, mean, metres (NaN: none)
   int firstFrame = -1, bestFrame = -1;
+  double nearestView = 1e9;  // metres: the nearest the lidar came to the edges the verdict rests on
 };
 
 // The verdicts of one polygon's boundary stretches. Samples that lie inside another polygon

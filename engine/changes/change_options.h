@@ -13,6 +13,10 @@ struct ChangeOptions {
   // A kerb farther than this from the map's boundary contradicts it (the map's error, the poses'
   // error and a cell's width stay below it).
   double tolerance = 1.25;
+  // Metres: an edge off the boundary that the lidar saw only from farther away contradicts nothing
+  // (the rings are sparse there, and the road walk runs on over flush verges: 16-37 m away on the
+  // tuning family's false alarms).
+  double edgeRange = 15.0;
   int minSamples = 5;              // a stretch needs this many observed (contradicting) samples for a verdict
   double contradictedShare = 0.4;  // of its observed samples, for the stretch to be contradicted
   double seamDepth = 0.5;       // a sample this far inside the union of the polygons is a seam between two

@@ -39,7 +39,8 @@ json stretchFeature(const BoundaryStretch& s) {
                    {"contradicted", s.contradicted},
                    {"road_beyond", s.open},
                    {"kerb_points", s.curbPoints},
-                   {"ground_offset_m", number(s.groundOffset)}};
+                   {"ground_offset_m", number(s.groundOffset)},
+                   {"nearest_view_m", s.nearestView < 1e8 ? number(s.nearestView) : json(nullptr)}};
   json properties = {{"element", "drivable_area"},
                      {"id", s.areaId},
                      {"stretch", s.index},
