@@ -16,7 +16,7 @@ struct BoundaryReading {
     AcrossGap,   // the road goes on across a gap in the map, `offset` metres wide, to another drivable area
   };
   Kind kind = Kind::Unobserved;
-  double offset = 0.0;       // metres along the outward normal (Edge; the reach for Open)
+  double offset = 0.0;       // metres along the outward normal (Edge; the gap's width for AcrossGap; the reach for Open)
   int curbPoints = 0;        // kerb points the walks ended at, near the edge
   float groundOffset = NAN;  // mean lidar ground minus ground-height raster along the profile, metres
   int firstFrame = -1, bestFrame = -1;

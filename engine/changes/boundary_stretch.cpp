@@ -72,8 +72,12 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
     if (contradicts(b, o) && b.nearestView > o.edgeRange) continue;
     ++s.observed;
     observed.push_back(b.offset);
-    if (contradicts(b, o)) against.push_back(b.offset), againstAcrossGap += b.kind == BoundaryReading::Kind::AcrossGap, nearestAgainst = std::min<double>(nearestAgainst, b.nearestView);
     nearestObserved = std::min<double>(nearestObserved, b.nearestView);
+    if (contradicts(b, o)) {
+      against.push_back(b.offset);
+      againstAcrossGap += b.kind == BoundaryReading::Kind::AcrossGap;
+      nearestAgainst = std::min<double>(nearestAgainst, b.nearestView);
+    }
     s.curbPoints += b.curbPoints;
     if (std::isfinite(b.groundOffset)) ground += b.groundOffset, ++groundCount;
     if (b.firstFrame >= 0 && (s.firstFrame < 0 || b.firstFrame < s.firstFrame)) s.firstFrame = b.firstFrame;
