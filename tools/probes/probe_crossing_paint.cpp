@@ -17,6 +17,7 @@
 #include "engine/lidar/ground_segmentation.h"
 #include "engine/lidar/sweep_points.h"
 #include "engine/map/hd_map.h"
+#include "crossing_frame.h"
 #include "probe_arguments.h"
 
 using namespace hdprior;
@@ -26,24 +27,6 @@ namespace {
 constexpr double kBin = 0.25;
 constexpr int kBins = 40;  // -5 .. 5 m across
 const int kBright = std::getenv("BRIGHT") ? std::atoi(std::getenv("BRIGHT")) : 30;
-
-struct CrossingFrame {
-  Eigen::Vector2d centre, axis, across;
-  double halfLength = 0, halfWidth = 0;
-};
-
-CrossingFrame frameOf(const PedestrianCrossing& c) {
-  const Eigen::Vector2d a0 = c.edge1[0].head<2>(), a1 = c.edge1[1].head<2>();
-  Eigen::Vector2d b0 = c.edge2[0].head<2>(), b1 = c.edge2[1].head<2>();
-  if ((a1 - a0).dot(b1 - b0) < 0) std::swap(b0, b1);
-  CrossingFrame f;
-  f.centre = (a0 + a1 + b0 + b1) / 4;
-  f.axis = ((a1 - a0) + (b1 - b0)).normalized();
-  f.across = {-f.axis.y(), f.axis.x()};
-  f.halfLength = 0.5 * ((a1 - a0).norm() + (b1 - b0).norm()) / 2;
-  f.halfWidth = std::abs(((a0 + a1) / 2 - (b0 + b1) / 2).dot(f.across)) / 2;
-  return f;
-}
 
 }  // namespace
 

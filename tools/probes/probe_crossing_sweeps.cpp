@@ -19,6 +19,7 @@
 #include "engine/lidar/sweep_points.h"
 #include "engine/map/hd_map.h"
 #include "engine/sim/road_paint.h"
+#include "crossing_frame.h"
 
 using namespace hdprior;
 
@@ -31,29 +32,7 @@ int median(std::vector<int> v) {
   return v[v.size() / 2];
 }
 
-struct CrossingBox {
-  Eigen::Vector2d centre, axis, across;
-  double halfLength = 0, halfWidth = 0;
-  bool contains(const Eigen::Vector2d& p) const {
-    const Eigen::Vector2d d = p - centre;
-    return std::abs(d.dot(axis)) <= halfLength && std::abs(d.dot(across)) <= halfWidth;
-  }
-};
-
-CrossingBox boxOf(const PedestrianCrossing& c) {
-  const Eigen::Vector2d a0 = c.edge1[0].head<2>(), a1 = c.edge1[1].head<2>();
-  Eigen::Vector2d b0 = c.edge2[0].head<2>(), b1 = c.edge2[1].head<2>();
-  if ((a1 - a0).dot(b1 - b0) < 0) std::swap(b0, b1);
-  CrossingBox box;
-  box.centre = (a0 + a1 + b0 + b1) / 4;
-  box.axis = ((a1 - a0) + (b1 - b0)).normalized();
-  box.across = {-box.axis.y(), box.axis.x()};
-  box.halfLength = 0.25 * ((a1 - a0).norm() + (b1 - b0).norm());
-  box.halfWidth = std::abs(((a0 + a1) / 2 - (b0 + b1) / 2).dot(box.across)) / 2;
-  return box;
-}
-
-void probeSweep(const ArgoverseLog& log, size_t s, const SE3& cityTEgo, const CrossingBox& box, const RoadPaint& paint) {
+void probeSweep(const ArgoverseLog& log, size_t s, const SE3& cityTEgo, const CrossingFrame& box, const RoadPaint& paint) {
   const auto sweep = log.sweep(s);
   const std::vector<Eigen::Vector3d> points = sweepPoints(*sweep);
   const std::vector<uint8_t> ground = segmentGround(points);
@@ -104,7 +83,7 @@ int main(int argc, char** argv) try {
   const HdMap map = HdMap::load(log.mapFiles());
   for (const PedestrianCrossing& c : map.vectorMap().pedestrianCrossings) {
     if (c.id != id || c.edge1.size() < 2 || c.edge2.size() < 2) continue;
-    const CrossingBox box = boxOf(c);
+    const CrossingFrame box = frameOf(c);
     const RoadPaint paint(map.vectorMap(), box.centre - Eigen::Vector2d(50, 50), box.centre + Eigen::Vector2d(50, 50));
     std::printf("crossing %lld: %.1f m long, %.2f m wide\n", id, 2 * box.halfLength, 2 * box.halfWidth);
     for (size_t s = 0; s < log.sweepTimestamps().size(); ++s) {
