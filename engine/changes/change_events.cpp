@@ -35,7 +35,14 @@ std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryS
 std::string misalignedDetail(const std::vector<MisalignedSweep>& sweeps, size_t first, size_t last) {
   const SweepAlignment& a = sweeps[first].alignment;
   char b[240];
-  if (first == last)
+  if (sweeps[first].offGround) {
+    if (first == last)
+      std::snprintf(b, sizeof b, "sweep %d left out: the road under it lies %.2f m %s the ground-height raster; its pose looks off",
+                    sweeps[first].frame, std::abs(a.roadOverRaster), a.roadOverRaster > 0 ? "above" : "below");
+    else
+      std::snprintf(b, sizeof b, "sweeps %d-%d left out (%zu read): the road under them lies off the ground-height raster (first: %.2f m %s it); the poses look off",
+                    sweeps[first].frame, sweeps[last].frame, last - first + 1, std::abs(a.roadOverRaster), a.roadOverRaster > 0 ? "above" : "below");
+  } else if (first == last)
     std::snprintf(b, sizeof b, "sweep %d left out: its kerbs meet the map shifted %.1f m (%d of %d kerb points, %d unshifted); its pose looks off",
                   sweeps[first].frame, a.shift.norm(), a.alignedShifted, a.kerbs, a.alignedAtPose);
   else

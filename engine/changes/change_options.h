@@ -27,6 +27,12 @@ struct ChangeOptions {
   // in its worst turns): a sweep whose kerbs line up with the map only under a shift this large
   // is left out as a pose error; a larger shift is a map change.
   double poseErrorPerMetre = 0.03;
+  // The road within groundRange (metres) of the sensor lies on the ground-height raster when the
+  // pose is right; a sweep whose road stands further off it than groundOffsetLimit (a kerb's
+  // height: the built-in odometry's optimised poses stay within 0.21 m on the tuning family) is
+  // left out as a pose error.
+  double groundRange = 10.0;
+  double groundOffsetLimit = 0.25;
   // Road paint (crossings): measured on the real sweeps, it stands out from asphalt only this near the sensor.
   double paintRange = 12.0;
   double paintContrast = 1.7;  // a bright return: this many times the median of its ring's near road

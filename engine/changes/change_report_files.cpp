@@ -163,6 +163,7 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
                           {"kerb_points_on_map", m.alignment.alignedAtPose},
                           {"kerb_points_on_map_shifted", m.alignment.alignedShifted},
                           {"polygons_shifted", m.alignment.polygonsShifted},
+                          {"road_over_raster_m", number(m.alignment.roadOverRaster)},
                           {"shift_m", {number(m.alignment.shift.x()), number(m.alignment.shift.y())}}});
   return json{{"log_id", logId},
               {"frames", report.frames},

@@ -109,14 +109,14 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
     const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k].index);
     Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}, {}};
     out.paint = findSweepPaint(*sweep, out.sweep, options);
-    out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), map.vectorMap().drivableAreas, options);
+    out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, options);
     return out;
   };
   auto add = [&](size_t k, const Labelled& labelled) {
     const int frame = int(sweeps[k].index);
     if (labelled.alignment.misaligned(options, sweeps[k].driven)) {
       const bool follows = k > 0 && !misaligned.empty() && misaligned.back().frame == int(sweeps[k - 1].index);
-      misaligned.push_back({frame, labelled.alignment, follows});
+      misaligned.push_back({frame, labelled.alignment, follows, labelled.alignment.offGround(options)});
       return;
     }
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k].index]);

@@ -3,16 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "engine/geom/polygon2d.h"
 #include "engine/geom/se2.h"
 #include "engine/lidar/road_points.h"
 #include "engine/map/boundary_distance.h"
+#include "engine/map/ground_height.h"
 
 namespace hdprior {
 
+namespace {
+constexpr int kMinRoadOnRaster = 50;  // road points a sweep needs for its height over the raster
+}  // namespace
+
+bool SweepAlignment::offGround(const ChangeOptions& o) const {
+  return roadOnRaster >= kMinRoadOnRaster && std::abs(roadOverRaster) > o.groundOffsetLimit;
+}
+
 bool SweepAlignment::misaligned(const ChangeOptions& o, double driven) const {
+  if (offGround(o)) return true;
   return alignedShifted >= 2 * o.minSamples && alignedShifted >= 2 * std::max(alignedAtPose, 1) && shift.norm() > o.tolerance &&
          polygonsShifted >= 2 && shift.norm() <= o.poseErrorPerMetre * driven;
 }
@@ -45,10 +57,26 @@ int polygonsHolding(const std::vector<Eigen::Vector2d>& points, const std::vecto
   return int(std::count_if(count.begin(), count.end(), [](int n) { return n >= 2; }));
 }
 
+// The median height of the road points within `range` of the sensor over the raster, and their count.
+std::pair<double, int> roadOverRaster(const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight& ground, double range) {
+  const Eigen::Matrix2d r = Eigen::Rotation2Dd(yawOf(cityTEgo)).toRotationMatrix();
+  const Eigen::Vector3d t = cityTEgo.translation();
+  std::vector<double> over;
+  for (size_t i = 0; i < sweep.points.size(); ++i) {
+    const Eigen::Vector3d& p = sweep.points[i];
+    if (sweep.road[i] != kRoadPoint || p.head<2>().norm() > range) continue;
+    const double raster = ground.bilinearAt(r * p.head<2>() + t.head<2>());
+    if (std::isfinite(raster)) over.push_back(p.z() + t.z() - raster);
+  }
+  if (over.empty()) return {0.0, 0};
+  std::nth_element(over.begin(), over.begin() + over.size() / 2, over.end());
+  return {over[over.size() / 2], int(over.size())};
+}
+
 }  // namespace
 
 SweepAlignment sweepAlignment(const LabelledSweep& sweep, const SE3& cityTEgo, const BoundaryDistance& distance,
-                              const std::vector<DrivableArea>& areas, const ChangeOptions& options) {
+                              const std::vector<DrivableArea>& areas, const GroundHeight* ground, const ChangeOptions& options) {
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(yawOf(cityTEgo)).toRotationMatrix();
   const Eigen::Vector2d t = cityTEgo.translation().head<2>();
   std::vector<Eigen::Vector2d> kerbs;  // city frame, at the pose
@@ -56,6 +84,7 @@ SweepAlignment sweepAlignment(const LabelledSweep& sweep, const SE3& cityTEgo, c
     if (sweep.road[i] == kCurbPoint) kerbs.push_back(r * sweep.points[i].head<2>() + t);
   SweepAlignment a;
   a.kerbs = int(kerbs.size());
+  if (ground) std::tie(a.roadOverRaster, a.roadOnRaster) = roadOverRaster(sweep, cityTEgo, *ground, options.groundRange);
   const auto aligned = [&](const Eigen::Vector2d& cityShift) {
     int n = 0;
     for (const Eigen::Vector2d& k : kerbs) n += std::abs(distance.cellDistance(k + cityShift)) <= options.cell;

@@ -23,10 +23,11 @@ TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFro
   for (size_t i = 0; i < log.sweepCount(); ++i) {
     const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
     const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
-    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), map.vectorMap().drivableAreas, o);
+    const GroundHeight* ground = &map.groundHeight();
+    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, o);
     SE3 moved = truth;
     moved.translation() += truth.linear() * Eigen::Vector3d(0.0, 2.5, 0.0);
-    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), map.vectorMap().drivableAreas, o);
+    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, o);
     std::printf("sweep %zu: %d kerb points, %d on the map at the true pose (best shift %.2f m: %d); moved 2.5 m left: %d on it, "
                 "%d shifted (%.2f, %.2f) on %d polygons\n",
                 i, a.kerbs, a.alignedAtPose, a.shift.norm(), a.alignedShifted, m.alignedAtPose, m.alignedShifted, m.shift.x(),
@@ -36,6 +37,37 @@ TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFro
     EXPECT_TRUE(m.misaligned(o, 1000.0));
     EXPECT_FALSE(m.misaligned(o, 50.0)) << "after 50 m a pose is not 2.5 m off: that is the map";
     EXPECT_NEAR(m.shift.y(), -2.5, 0.5);
+  }
+}
+
+// At the true pose the road under the car lies on the ground-height raster; raised by 0.4 m (or
+// lowered), the pose is off and the sweep is left out, kerbs or not.
+TEST(SweepAlignmentReal, TheRoadUnderTheCarLiesOnTheRasterAtTheTruePose) {
+  const ArgoverseLog log(test::sharedLog());
+  HdMapOptions mapOptions;
+  mapOptions.ndtCellSizes.clear();
+  const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
+  const ChangeOptions o;
+  for (size_t i = 0; i < log.sweepCount(); ++i) {
+    const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
+    const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
+    const auto at = [&](double dz) {
+      SE3 pose = truth;
+      pose.translation().z() += dz;
+      return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, &map.groundHeight(), o);
+    };
+    const SweepAlignment a = at(0.0);
+    std::printf("sweep %zu: %d road points within 10 m on the raster, %.3f m over it\n", i, a.roadOnRaster, a.roadOverRaster);
+    EXPECT_GT(a.roadOnRaster, 1000);
+    EXPECT_LT(std::abs(a.roadOverRaster), 0.1);
+    EXPECT_FALSE(a.offGround(o));
+    EXPECT_FALSE(a.misaligned(o, 1000.0));
+    for (double dz : {0.4, -0.4}) {
+      const SweepAlignment off = at(dz);
+      EXPECT_NEAR(off.roadOverRaster, a.roadOverRaster + dz, 1e-6);
+      EXPECT_TRUE(off.offGround(o));
+      EXPECT_TRUE(off.misaligned(o, 0.0)) << "a height off the raster needs no drive to be a pose error";
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/changes/synthetic_street.h"
+#include "engine/map/ground_height.h"
 #include "engine/map/synthetic_maps.h"
 
 namespace hdprior {
@@ -33,7 +34,7 @@ SE3 at(double x, double y) {
 HdMap twoPolygonStreet() { return test::streetMap({test::rectangle(-100, -5, 0, 5), test::rectangle(0, -5, 100, 5)}); }
 
 SweepAlignment alignment(const HdMap& map, const LabelledSweep& sweep, const SE3& pose) {
-  return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, ChangeOptions{});
+  return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, nullptr, ChangeOptions{});
 }
 
 TEST(SweepAlignment, KerbsOnTheMapAtThePoseAreAligned) {
@@ -87,6 +88,37 @@ TEST(SweepAlignment, AFewKerbsSayNothing) {
   const SweepAlignment a = alignment(map, few, at(0, 2.5));
   EXPECT_EQ(a.kerbs, 4);
   EXPECT_FALSE(a.misaligned(ChangeOptions{}, 500.0));
+}
+
+// The road under the car `height` metres over a flat raster at 0 (1 m pixels over +-50 m): `n`
+// road points on a ring of 6 m.
+SweepAlignment overFlatGround(double height, int n) {
+  Sim2 sim2;
+  sim2.t = Eigen::Vector2d(50, 50);
+  const GroundHeight flat(sim2, 100, 100, std::vector<float>(100 * 100, 0.0f), "flat");
+  LabelledSweep sweep = kerbsOfTheStreet();
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n;
+    sweep.points.emplace_back(6 * std::cos(a), 6 * std::sin(a), height);
+    sweep.ground.push_back(1);
+    sweep.road.push_back(kRoadPoint);
+  }
+  const HdMap map = twoPolygonStreet();
+  return sweepAlignment(sweep, at(0, 0), map.boundaryDistance(), map.vectorMap().drivableAreas, &flat, ChangeOptions{});
+}
+
+TEST(SweepAlignment, ARoadOffTheGroundHeightRasterIsAPoseErrorWhereverTheKerbsLie) {
+  const ChangeOptions o;
+  const SweepAlignment on = overFlatGround(0.1, 200);
+  EXPECT_NEAR(on.roadOverRaster, 0.1, 1e-6);
+  EXPECT_EQ(on.roadOnRaster, 200) << "the kerb points are not counted";
+  EXPECT_FALSE(on.misaligned(o, 500.0));
+  const SweepAlignment above = overFlatGround(0.4, 200), below = overFlatGround(-0.3, 200);
+  EXPECT_EQ(above.alignedAtPose, above.kerbs) << "its kerbs are on the map";
+  EXPECT_TRUE(above.offGround(o));
+  EXPECT_TRUE(above.misaligned(o, 0.0));
+  EXPECT_TRUE(below.misaligned(o, 0.0));
+  EXPECT_FALSE(overFlatGround(0.4, 20).misaligned(o, 500.0)) << "20 road points are too few to tell";
 }
 
 }  // namespace
