@@ -67,9 +67,10 @@ std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
   }
   for (const CrossingVerdict& c : report.crossings) {
     if (c.verdict != MapVerdict::Contradicted || c.bestFrame < 0) continue;
-    char b[160];
-    std::snprintf(b, sizeof b, "crossing %lld: no more paint than the asphalt (%d of %d road cells, asphalt %.0f %%; confidence %.2f)",
-                  (long long)c.id, c.paintCells, c.roadCells, 100.0 * c.asphaltShare, c.confidence);
+    char b[200];
+    const CrossingBrightness& l = c.brightness;
+    std::snprintf(b, sizeof b, "crossing %lld: no brighter than the road around it (%+.2f, %.1f times its uncertainty; the log's painted crossings %+.2f; confidence %.2f)",
+                  (long long)c.id, l.lift(), l.z(), c.paintedLift, c.confidence);
     events.push_back({RunEvent::Kind::MapChange, 0, size_t(c.bestFrame), b});
   }
   for (const MissingCrossing& m : report.missingCrossings) {

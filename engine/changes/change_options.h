@@ -40,14 +40,17 @@ struct ChangeOptions {
   double paintRunGap = 0.15;   // ... no farther apart than this (metres)
   // Crossings: the road near the sensor in cells this wide (metres); a cell with a paint run in it is painted.
   double paintCell = 0.25;
-  // A painted crossing's share of painted cells against the log's asphalt's (measured on the tuning
-  // family: 2-6x; real edge lines cover a fifth of a crossing).
+  // Missing crossings: a painted crossing's share of painted cells against the log's asphalt's
+  // (measured on the tuning family: 2-6x; real edge lines cover a fifth of a crossing).
   double crossingContrast = 3.0;
   double crossingPaintShare = 0.1;  // ... and at least this share, on clean asphalt
-  double crossingEvidence = 3.0;  // log-likelihood ratio of paint against none for a crossing's verdict
-  // A crossing is contradicted only where its share is at most this many times the asphalt's: a
-  // crossing seen at the edge of the range or worn reads between (1.2-1.7x on the tuning family).
-  double crossingAsphaltLevel = 1.25;
+  // A crossing is painted when the road inside it is brighter than around it by this many standard
+  // errors (on the tuning family, painted crossings read 2.7-10 and crossings the world lacks 0.4 or
+  // less) ...
+  double crossingZ = 3.0;
+  // ... and unpainted when it is no brighter than this, and as many standard errors below the
+  // log's painted crossings.
+  double crossingAbsentZ = 1.0;
   double crossingDepth = 3.0, crossingWidth = 6.0;  // metres: the band an unmapped crossing is looked for in
   // The log-likelihood ratio an unmapped crossing needs: the band is looked for around every stray
   // run, and a road's own marks cluster (on the tuning family, false bands reach 10).

@@ -13,6 +13,12 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Outline = std::vector<Vec2>;
 
+constexpr int kMinCells = 30;           // road cells inside a crossing, and around it, for a verdict
+constexpr int kMinControls = 5;         // bare-road outlines a log needs for its road's spread
+constexpr double kBrightnessCap = 4.0;  // a cell's mean brightness counts up to this (a kerb's, a sign's)
+
+bool seenEnough(const CrossingBrightness& b) { return b.insideCells >= kMinCells && b.aroundCells >= kMinCells && b.standardError > 0.0; }
+
 // The frame of the most runs among `frames` (sorted), and the first.
 std::pair<int, int> firstAndBestFrame(std::vector<int> frames) {
   std::sort(frames.begin(), frames.end());
@@ -60,7 +66,11 @@ void CrossingEvidence::add(int frame, const SweepPaint& paint, const SE3& cityTE
   std::vector<Vec2> road, runs;
   for (const Vec2& p : paint.road) road.push_back(r * p + t);
   for (const PaintRun& run : paint.runs) runs.push_back(r * run.centre + t);
-  for (const Vec2& p : road) ++cellAt(p).road;
+  for (size_t i = 0; i < road.size(); ++i) {
+    PaintCell& cell = cellAt(road[i]);
+    ++cell.road;
+    cell.brightness += paint.brightness[i];
+  }
   std::vector<Place> places;
   for (const Vec2& p : runs) {
     PaintCell& cell = cellAt(p);
@@ -133,27 +143,87 @@ double CrossingEvidence::evidence(const PaintTally& t, double asphaltShare) cons
   return paintEvidence(t, asphaltShare, options_.crossingContrast, options_.crossingPaintShare);
 }
 
+CrossingBrightness CrossingEvidence::brightnessOf(const Outline& outline, uint8_t inside) const {
+  const Outline outer = grownQuad(outline, 3.0), inner = grownQuad(outline, 1.0);
+  Vec2 lo = outer.front(), hi = outer.front();
+  for (const Vec2& p : outer) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const double s = options_.paintCell;
+  double sum[2] = {0, 0}, squares[2] = {0, 0};  // inside, around
+  int count[2] = {0, 0};
+  for (double x = (std::floor(lo.x() / s) + 0.5) * s; x <= hi.x(); x += s)
+    for (double y = (std::floor(lo.y() / s) + 0.5) * s; y <= hi.y(); y += s) {
+      const PaintCell* cell = cells_.find({x, y});
+      if (!cell || cell->road == 0) continue;
+      int k = -1;
+      if (cell->place == inside && ringContains(outline, {x, y})) k = 0;
+      else if (Place(cell->place) == Place::Road && ringContains(outer, {x, y}) && !ringContains(inner, {x, y})) k = 1;
+      if (k < 0) continue;
+      const double mean = std::min(kBrightnessCap, double(cell->brightness) / cell->road);
+      sum[k] += mean, squares[k] += mean * mean, ++count[k];
+    }
+  CrossingBrightness b;
+  b.insideCells = count[0], b.aroundCells = count[1];
+  if (count[0] < 2 || count[1] < 2) return b;
+  b.inside = sum[0] / count[0], b.around = sum[1] / count[1];
+  const auto varianceOfMean = [&](int k, double mean) { return std::max(0.0, squares[k] / count[k] - mean * mean) / (count[k] - 1); };
+  b.standardError = std::sqrt(varianceOfMean(0, b.inside) + varianceOfMean(1, b.around));
+  return b;
+}
+
+std::pair<double, int> CrossingEvidence::roadSpread() const {
+  double squares = 0.0;
+  int controls = 0;
+  for (const Crossing& c : crossings_) {
+    const Vec2 along = (c.verdict.outline[1] - c.verdict.outline[0]).normalized(), normal(-along.y(), along.x());
+    for (const double shift : {-24.0, -16.0, -8.0, 8.0, 16.0, 24.0}) {
+      Outline moved = c.verdict.outline;
+      for (Vec2& p : moved) p += shift * normal;
+      const CrossingBrightness b = brightnessOf(moved, uint8_t(Place::Road));
+      if (!seenEnough(b)) continue;
+      // Its cells' own scatter is in each crossing's standard error already; the spread is the rest.
+      squares += b.lift() * b.lift() - b.standardError * b.standardError;
+      ++controls;
+    }
+  }
+  return {controls > 0 ? std::sqrt(std::max(0.0, squares / controls)) : 0.0, controls};
+}
+
 std::vector<CrossingVerdict> CrossingEvidence::verdicts() const {
   const double share = asphaltShare();
+  const auto [spread, controls] = roadSpread();
   std::vector<CrossingVerdict> out;
+  std::vector<double> paintedLifts;
   for (const Crossing& c : crossings_) {
     CrossingVerdict v = c.verdict;
     const PaintTally t = tallyIn(c.reach, Place::Crossing);
     v.roadCells = t.road;
     v.paintCells = t.painted;
     v.asphaltShare = share;
-    const double e = evidence(t, share);
-    const bool asAsphalt = t.painted <= options_.crossingAsphaltLevel * share * t.road;
-    v.verdict = e >= options_.crossingEvidence                  ? MapVerdict::Consistent
-                : e <= -options_.crossingEvidence && asAsphalt ? MapVerdict::Contradicted
-                                                               : MapVerdict::Unobserved;
-    v.confidence = v.verdict == MapVerdict::Unobserved ? 0.0 : evidenceConfidence(e);
+    v.brightness = brightnessOf(v.outline, uint8_t(Place::Crossing));
+    v.brightness.spread = spread;
+    v.controls = controls;
+    if (controls >= kMinControls && seenEnough(v.brightness) && v.brightness.z() >= options_.crossingZ) {
+      v.verdict = MapVerdict::Consistent;
+      v.confidence = evidenceConfidence(v.brightness.z());
+      paintedLifts.push_back(v.brightness.lift());
+    }
     out.push_back(std::move(v));
   }
-  // Faint or worn paint reads as asphalt: no paint is evidence only in a log whose crossings show it.
-  const bool paintShows = std::any_of(out.begin(), out.end(), [](const CrossingVerdict& v) { return v.verdict == MapVerdict::Consistent; });
-  for (CrossingVerdict& v : out)
-    if (!paintShows && v.verdict == MapVerdict::Contradicted) v.verdict = MapVerdict::Unobserved, v.confidence = 0.0;
+  // Faint or worn paint may not stand out: no lift is evidence only against the lift of the log's
+  // own painted crossings.
+  if (paintedLifts.empty()) return out;
+  std::nth_element(paintedLifts.begin(), paintedLifts.begin() + paintedLifts.size() / 2, paintedLifts.end());
+  const double painted = paintedLifts[paintedLifts.size() / 2];
+  for (CrossingVerdict& v : out) {
+    v.paintedLift = painted;
+    const CrossingBrightness& b = v.brightness;
+    if (v.verdict != MapVerdict::Unobserved || !seenEnough(b)) continue;
+    const double below = (painted - b.lift()) / b.uncertainty();
+    if (b.z() <= options_.crossingAbsentZ && below >= options_.crossingZ) {
+      v.verdict = MapVerdict::Contradicted;
+      v.confidence = evidenceConfidence(below);
+    }
+  }
   return out;
 }
 

@@ -11,6 +11,7 @@ namespace hdprior {
 struct PaintCell {
   int road = 0;  // road points that fell in it
   int runs = 0;  // paint runs centred in it: a cell with one is painted, however many sweeps saw it
+  float brightness = 0.0f;  // the road points' summed brightness (SweepPaint::brightness)
   uint8_t place = 0;  // what the map has here, as the check that owns the cells reads it
 };
 

@@ -10,12 +10,14 @@ namespace {
 
 constexpr size_t kRingPointsForMedian = 50;  // fewer road points of a ring take the sweep's median
 
-uint8_t medianIntensity(const LidarSweep& sweep, const std::vector<size_t>& near) {
+// The intensity below which `share` of the points lie (0.5: the median).
+uint8_t intensityQuantile(const LidarSweep& sweep, const std::vector<size_t>& near, double share) {
   std::vector<uint8_t> values;
   values.reserve(near.size());
   for (size_t i : near) values.push_back(sweep.points[i].intensity);
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
+  const auto at = values.begin() + std::ptrdiff_t(share * double(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
 }
 
 // Runs of bright returns in one ring's road points near the sensor (`ring`, in azimuth order).
@@ -47,7 +49,7 @@ SweepPaint findSweepPaint(const LidarSweep& sweep, const LabelledSweep& labelled
   for (size_t i = 0; i < labelled.points.size(); ++i)
     if (labelled.road[i] && labelled.points[i].head<2>().norm() <= options.paintRange) near.push_back(i);
   if (near.empty()) return paint;
-  const uint8_t sweepMedian = medianIntensity(sweep, near);
+  const uint8_t sweepMedian = intensityQuantile(sweep, near, 0.5), sweepQuartile = intensityQuantile(sweep, near, 0.25);
   std::vector<bool> bright(labelled.points.size(), false);
   std::vector<double> azimuth(labelled.points.size(), 0.0);
   std::map<uint8_t, std::vector<size_t>> rings;
@@ -56,14 +58,22 @@ SweepPaint findSweepPaint(const LidarSweep& sweep, const LabelledSweep& labelled
     azimuth[i] = std::atan2(labelled.points[i].y(), labelled.points[i].x());
     rings[sweep.points[i].laserNumber].push_back(i);
   }
+  std::vector<float> brightness(labelled.points.size(), 0.0f);
   for (auto& [laser, ring] : rings) {
     // Each ring against its own asphalt: a near ring meets the road at a steeper angle and returns
     // more from it, a far one less (against the sweep's median, paint 10 m off went unseen).
-    const double threshold = options.paintContrast * (ring.size() >= kRingPointsForMedian ? medianIntensity(sweep, ring) : sweepMedian);
-    for (size_t i : ring) bright[i] = sweep.points[i].intensity > threshold;
+    const bool own = ring.size() >= kRingPointsForMedian;
+    const double threshold = options.paintContrast * (own ? intensityQuantile(sweep, ring, 0.5) : sweepMedian);
+    // Brightness against the lower quartile: a crossing seen head-on fills much of a ring and lifts its median.
+    const double asphalt = std::max<double>(1.0, own ? intensityQuantile(sweep, ring, 0.25) : sweepQuartile);
+    for (size_t i : ring) {
+      bright[i] = sweep.points[i].intensity > threshold;
+      brightness[i] = float(sweep.points[i].intensity / asphalt);
+    }
     std::sort(ring.begin(), ring.end(), [&](size_t a, size_t b) { return azimuth[a] < azimuth[b]; });
     addRuns(ring, bright, labelled, options, paint.runs);
   }
+  for (size_t i : near) paint.brightness.push_back(brightness[i]);
   return paint;
 }
 

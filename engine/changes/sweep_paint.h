@@ -18,6 +18,7 @@ struct PaintRun {
 // The road paint a sweep shows near the sensor, in its levelled ego frame (x, y).
 struct SweepPaint {
   std::vector<Eigen::Vector2d> road;  // every road point within options.paintRange
+  std::vector<float> brightness;      // each one's intensity over its ring's lower quartile (as `road`)
   std::vector<PaintRun> runs;
 };
 

@@ -77,7 +77,7 @@ TEST(MapCheck, CrossingsTheLidarContradictsAreCountedAndListedAsEvents) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("crossings: 1 contradicted"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(", 1 missing\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("map-change crossing " + std::to_string(drawn) + ": no more paint than the asphalt"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("map-change crossing " + std::to_string(drawn) + ": no brighter than the road around it"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("map-change unmapped crossing"), std::string::npos) << r.out;
   // The painted cells the checks read, off the map's paint in orange (the unmapped crossing's, the asphalt's marks).
   EXPECT_GT(paintElsewherePixels(readPng(after)), paintElsewherePixels(readPng(before)) + 100) << after;

@@ -1,7 +1,11 @@
-// Crossings judged by the paint near the lidar: painted, unpainted, unseen, and paint the map lacks.
+// Crossings judged by how much brighter the road is inside them than around it, against the road's
+// own spread: painted, unpainted, unseen, a road too varied to tell, and paint the map lacks.
 #include "engine/changes/crossing_check.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
 
 #include "engine/geom/polygon2d.h"
 
@@ -19,12 +23,12 @@ PedestrianCrossing crossingAhead(int64_t id) {
   return c;
 }
 
-// Ground every 0.1 m within `range` of the sensor (about 4,000 returns in the crossing).
+// Ground every 0.1 m within `range` of the sensor (about 4,000 returns in the crossing), of brightness 1.
 SweepPaint groundAround(double range) {
   SweepPaint paint;
   for (double x = -range; x <= range; x += 0.1)
     for (double y = -range; y <= range; y += 0.1)
-      if (std::hypot(x, y) <= range) paint.road.emplace_back(x, y);
+      if (std::hypot(x, y) <= range) paint.road.emplace_back(x, y), paint.brightness.push_back(1.0f);
   return paint;
 }
 
@@ -34,21 +38,54 @@ void addRunsAlong(SweepPaint& paint, const Vec2& a, const Vec2& b) {
   for (int k = 0; k <= n; ++k) paint.runs.push_back({a + (b - a) * (double(k) / n), 4});
 }
 
-TEST(CrossingCheck, PaintedEdgesMakeACrossingConsistent) {
+// A fixed number in [-1, 1) for a pair of integers.
+double hashed(long a, long b) {
+  uint32_t h = uint32_t(a * 73856093L) ^ uint32_t(b * 19349663L);
+  h ^= h >> 13, h *= 0x5bd1e995u, h ^= h >> 15;
+  return (h % 20000) / 10000.0 - 1.0;
+}
+
+// A street along x (x -30..30, y -6..6) with a road return every 0.1 m: asphalt of brightness 1
+// that varies by up to +-`texture` from one `patch`-metre square to the next and by +-10 % from
+// return to return, and paint 1.6 times as bright where `painted`.
+SweepPaint street(const std::function<bool(const Vec2&)>& painted, double texture = 0.1, double patch = 1.0) {
+  SweepPaint paint;
+  for (long i = -300; i <= 300; ++i)
+    for (long j = -60; j <= 60; ++j) {
+      const Vec2 p(i * 0.1, j * 0.1);
+      const double road = 1.0 + texture * hashed(long(std::floor(p.x() / patch)), long(std::floor(p.y() / patch)));
+      paint.road.push_back(p);
+      paint.brightness.push_back(float((painted(p) ? 1.6 : 1.0) * road * (1.0 + 0.1 * hashed(i, j))));
+    }
+  return paint;
+}
+
+// Zebra stripes half a metre wide across the street (|y| < 4), in a crossing from x0 to x0 + 3.
+bool onStripe(const Vec2& p, double x0) {
+  const double u = p.x() - x0;
+  return std::abs(p.y()) < 4 && u > 0 && u < 3 && std::fmod(u, 1.0) > 0.25 && std::fmod(u, 1.0) < 0.75;
+}
+
+TEST(CrossingCheck, PaintedStripesMakeACrossingConsistent) {
   VectorMap map;
   map.pedestrianCrossings = {crossingAhead(7)};
   CrossingEvidence evidence(map, ChangeOptions{});
-  SweepPaint paint = groundAround(12.0);
-  addRunsAlong(paint, {5.1, -4}, {5.1, 4});
-  addRunsAlong(paint, {7.9, -4}, {7.9, 4});
+  SweepPaint paint = street([](const Vec2& p) { return onStripe(p, 5.0); });
+  addRunsAlong(paint, {5.5, -4}, {5.5, 4});
   evidence.add(3, paint, SE3::Identity());
   const std::vector<CrossingVerdict> verdicts = evidence.verdicts();
   ASSERT_EQ(verdicts.size(), 1u);
-  EXPECT_EQ(verdicts[0].id, 7);
-  EXPECT_EQ(verdicts[0].verdict, MapVerdict::Consistent);
-  EXPECT_GT(verdicts[0].confidence, 0.95);
-  EXPECT_EQ(verdicts[0].paintCells, 34);
-  EXPECT_EQ(verdicts[0].bestFrame, 3);
+  const CrossingVerdict& v = verdicts[0];
+  EXPECT_EQ(v.id, 7);
+  EXPECT_EQ(v.verdict, MapVerdict::Consistent);
+  EXPECT_GT(v.confidence, 0.95);
+  EXPECT_NEAR(v.brightness.lift(), 0.3, 0.05) << "half the crossing painted 1.6x";
+  EXPECT_GT(v.brightness.insideCells, 300);
+  EXPECT_GE(v.controls, 5) << "its outline moved along the street, on bare road";
+  EXPECT_GT(v.brightness.spread, 0.0);
+  EXPECT_LT(v.brightness.spread, 0.05);
+  EXPECT_GT(v.paintCells, 10) << "the runs are tallied too, for the map's paint layer";
+  EXPECT_EQ(v.bestFrame, 3);
   EXPECT_TRUE(evidence.missing().empty());
 }
 
@@ -63,31 +100,46 @@ PedestrianCrossing crossingBehind(int64_t id) {
 TEST(CrossingCheck, AWellSeenCrossingWithoutPaintIsContradictedWhereOthersShowPaint) {
   VectorMap map;
   map.pedestrianCrossings = {crossingAhead(7), crossingBehind(8)};
-  SweepPaint paint = groundAround(12.0);
-  addRunsAlong(paint, {-7.9, -4}, {-7.9, 4});
-  addRunsAlong(paint, {-5.1, -4}, {-5.1, 4});
   CrossingEvidence seen(map, ChangeOptions{});
-  seen.add(0, paint, SE3::Identity());
-  EXPECT_EQ(seen.verdicts()[0].verdict, MapVerdict::Contradicted);
-  EXPECT_GT(seen.verdicts()[0].roadCells, 500);
-  EXPECT_EQ(seen.verdicts()[1].verdict, MapVerdict::Consistent);
+  seen.add(0, street([](const Vec2& p) { return onStripe(p, -8.0); }), SE3::Identity());
+  const std::vector<CrossingVerdict> v = seen.verdicts();
+  EXPECT_EQ(v[0].verdict, MapVerdict::Contradicted);
+  EXPECT_GT(v[0].confidence, 0.95);
+  EXPECT_NEAR(v[0].paintedLift, 0.3, 0.05) << "the painted crossing's lift, which this one lacks";
+  EXPECT_EQ(v[1].verdict, MapVerdict::Consistent);
 
   // Where no crossing shows paint, the paint may be too faint to see: nothing is contradicted.
   CrossingEvidence faint(map, ChangeOptions{});
-  faint.add(0, groundAround(12.0), SE3::Identity());
+  faint.add(0, street([](const Vec2&) { return false; }), SE3::Identity());
   EXPECT_EQ(faint.verdicts()[0].verdict, MapVerdict::Unobserved);
   EXPECT_EQ(faint.verdicts()[1].verdict, MapVerdict::Unobserved);
 
+  // A metre of one ring across the first crossing is too little to tell.
   CrossingEvidence glimpsed(map, ChangeOptions{});
-  SweepPaint few = paint;
-  few.road.clear();
-  for (double y = -0.5; y <= 0.5; y += 0.1) few.road.emplace_back(6.0, y);  // a metre of one ring across the first
-  for (double x = -8; x <= -5; x += 0.1)
-    for (double y = -4; y <= 4; y += 0.1) few.road.emplace_back(x, y);
-  glimpsed.add(0, few, SE3::Identity());
+  SweepPaint few = street([](const Vec2& p) { return onStripe(p, -8.0); });
+  SweepPaint kept;
+  for (size_t i = 0; i < few.road.size(); ++i) {
+    const Vec2& p = few.road[i];
+    const bool inFirst = p.x() > 4 && p.x() < 9 && std::abs(p.y()) < 5;
+    if (!inFirst || (std::abs(p.x() - 6.0) < 0.05 && std::abs(p.y()) < 0.5)) kept.road.push_back(p), kept.brightness.push_back(few.brightness[i]);
+  }
+  glimpsed.add(0, kept, SE3::Identity());
   EXPECT_EQ(glimpsed.verdicts()[1].verdict, MapVerdict::Consistent);
   EXPECT_EQ(glimpsed.verdicts()[0].verdict, MapVerdict::Unobserved);
   EXPECT_EQ(glimpsed.verdicts()[0].confidence, 0.0);
+}
+
+// A road whose brightness varies over metre squares as much as paint lifts a crossing: the lift
+// is within the road's own spread, and no verdict is given.
+TEST(CrossingCheck, ARoadThatVariesAsMuchAsPaintLeavesCrossingsUnobserved) {
+  VectorMap map;
+  map.pedestrianCrossings = {crossingAhead(7), crossingBehind(8)};
+  CrossingEvidence evidence(map, ChangeOptions{});
+  evidence.add(0, street([](const Vec2& p) { return onStripe(p, -8.0); }, 0.6, 3.0), SE3::Identity());
+  const std::vector<CrossingVerdict> v = evidence.verdicts();
+  EXPECT_GT(v[0].brightness.spread, 0.15);
+  EXPECT_EQ(v[0].verdict, MapVerdict::Unobserved);
+  EXPECT_EQ(v[1].verdict, MapVerdict::Unobserved);
 }
 
 TEST(CrossingCheck, TheSweepsPoseCarriesItsPaintIntoTheCity) {
@@ -97,11 +149,9 @@ TEST(CrossingCheck, TheSweepsPoseCarriesItsPaintIntoTheCity) {
   for (Eigen::Vector3d& p : c.edge2) p.x() += 100;
   map.pedestrianCrossings = {c};
   CrossingEvidence evidence(map, ChangeOptions{});
-  SweepPaint paint = groundAround(12.0);
-  addRunsAlong(paint, {5.1, -4}, {5.1, 4});
-  addRunsAlong(paint, {7.9, -4}, {7.9, 4});
+  const SweepPaint paint = street([](const Vec2& p) { return onStripe(p, 5.0); });
   evidence.add(0, paint, SE3::Identity());  // the crossing is 100 m away: nothing seen
-  EXPECT_EQ(evidence.verdicts()[0].roadCells, 0);
+  EXPECT_EQ(evidence.verdicts()[0].brightness.insideCells, 0);
   SE3 moved = SE3::Identity();
   moved.translation().x() = 100;
   evidence.add(1, paint, moved);
@@ -145,28 +195,18 @@ TEST(CrossingCheck, PaintTheMapLacksIsAMissingCrossingButLaneLinesAndStopLinesAr
   EXPECT_GE(offMap, 5);
 }
 
-// Asphalt with a bright patch in 5 % of its quarter-metre cells (a fixed hash), a crossing (x 5..8)
-// whose stripes show in a third of its cells when `painted`, and one behind (x -8..-5) that always shows.
-SweepPaint patchyRoad(bool painted) {
-  SweepPaint paint = groundAround(12.0);
-  for (double x = -11.875; x < 12; x += 0.25)
-    for (double y = -11.875; y < 12; y += 0.25) {
-      if (std::hypot(x, y) > 12.0) continue;
-      const uint32_t hash = uint32_t(std::lround(x * 4 + 100) * 7919 + std::lround(y * 4 + 100) * 104729) % 1000;
-      const bool inCrossing = x > 5 && x < 8 && std::abs(y) < 4, inOther = x > -8 && x < -5 && std::abs(y) < 4;
-      if (inCrossing ? (painted && hash < 330) || hash < 50 : inOther ? hash < 330 : hash < 50) paint.runs.push_back({{x, y}, 4});
-    }
-  return paint;
-}
-
-TEST(CrossingCheck, AsphaltPatchesAreTheLogsBackgroundNotACrossing) {
+// Asphalt with a bright patch (2.5x) in 5 % of its quarter-metre cells: a crossing is judged
+// against the road's spread, so the patches neither paint an unpainted crossing nor hide a painted one.
+TEST(CrossingCheck, AsphaltPatchesAreTheRoadsSpreadNotACrossing) {
   VectorMap map;
   map.pedestrianCrossings = {crossingAhead(7), crossingBehind(8)};
   for (const bool painted : {true, false}) {
     CrossingEvidence evidence(map, ChangeOptions{});
-    for (int frame = 0; frame < 3; ++frame) evidence.add(frame, patchyRoad(painted), SE3::Identity());
+    SweepPaint paint = street([&](const Vec2& p) { return onStripe(p, -8.0) || (painted && onStripe(p, 5.0)); });
+    for (size_t i = 0; i < paint.road.size(); ++i)
+      if (hashed(long(std::floor(paint.road[i].x() * 4)), long(std::floor(paint.road[i].y() * 4)) + 7) > 0.9) paint.brightness[i] *= 2.5f;
+    for (int frame = 0; frame < 3; ++frame) evidence.add(frame, paint, SE3::Identity());
     const CrossingVerdict v = evidence.verdicts()[0];
-    EXPECT_NEAR(v.asphaltShare, 0.05, 0.015);
     EXPECT_EQ(v.verdict, painted ? MapVerdict::Consistent : MapVerdict::Contradicted) << painted;
     EXPECT_TRUE(evidence.missing().empty()) << painted;
   }
