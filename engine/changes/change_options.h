@@ -44,12 +44,12 @@ struct ChangeOptions {
   // (measured on the tuning family: 2-6x; real edge lines cover a fifth of a crossing).
   double crossingContrast = 3.0;
   double crossingPaintShare = 0.1;  // ... and at least this share, on clean asphalt
-  // A crossing is painted when the road inside it is brighter than around it by this many standard
-  // errors (on the tuning family, painted crossings read 2.7-10 and crossings the world lacks 0.4 or
-  // less) ...
+  // A crossing is painted when the road inside it is brighter than around it by this many times the
+  // lift's uncertainty (CrossingBrightness: on the tuning family, painted crossings read up to 5.4,
+  // those the world lacks 0.4 or less) ...
   double crossingZ = 3.0;
-  // ... and unpainted when it is no brighter than this, and as many standard errors below the
-  // log's painted crossings.
+  // ... and unpainted when it is no brighter than this many times it, and crossingZ times it below
+  // the log's painted crossings.
   double crossingAbsentZ = 1.0;
   double crossingDepth = 3.0, crossingWidth = 6.0;  // metres: the band an unmapped crossing is looked for in
   // The log-likelihood ratio an unmapped crossing needs: the band is looked for around every stray
