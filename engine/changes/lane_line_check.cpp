@@ -47,21 +47,6 @@ std::vector<std::vector<Vec2>> piecesOf(const Polyline3& line, double length) {
   return out;
 }
 
-// The offset of p to the left of a polyline, where p projects inside one of its segments.
-std::optional<double> leftOffset(const std::vector<Vec2>& line, const Vec2& p) {
-  std::optional<double> best;
-  for (size_t i = 0; i + 1 < line.size(); ++i) {
-    const Vec2 d = line[i + 1] - line[i];
-    const double length2 = d.squaredNorm();
-    if (length2 < 1e-12) continue;
-    const double t = (p - line[i]).dot(d) / length2;
-    if (t < 0.0 || t > 1.0) continue;
-    const double offset = (d.x() * (p.y() - line[i].y()) - d.y() * (p.x() - line[i].x())) / std::sqrt(length2);
-    if (!best || std::abs(offset) < std::abs(*best)) best = offset;
-  }
-  return best;
-}
-
 }  // namespace
 
 LaneLineEvidence::LaneLineEvidence(const VectorMap& map, const ChangeOptions& options)

@@ -111,4 +111,18 @@ Ring2 grownQuad(const Ring2& quad, double margin) {
   return out;
 }
 
+std::optional<double> leftOffset(std::span<const Eigen::Vector2d> line, const Eigen::Vector2d& p) {
+  std::optional<double> best;
+  for (size_t i = 0; i + 1 < line.size(); ++i) {
+    const Eigen::Vector2d d = line[i + 1] - line[i];
+    const double length2 = d.squaredNorm();
+    if (length2 < 1e-12) continue;
+    const double t = (p - line[i]).dot(d) / length2;
+    if (t < 0.0 || t > 1.0) continue;
+    const double offset = (d.x() * (p.y() - line[i].y()) - d.y() * (p.x() - line[i].x())) / std::sqrt(length2);
+    if (!best || std::abs(offset) < std::abs(*best)) best = offset;
+  }
+  return best;
+}
+
 }  // namespace hdprior

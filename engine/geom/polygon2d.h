@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -28,5 +29,8 @@ Ring2 crossingOutline(const PedestrianCrossing& crossing);
 Ring2 grownQuad(const Ring2& quad, double margin);
 // Unit normal to the left of a -> b.
 Eigen::Vector2d leftNormal(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+// How far p lies to the left of a polyline (negative: right), by the nearest of the segments p
+// projects inside; nullopt where it projects inside none.
+std::optional<double> leftOffset(std::span<const Eigen::Vector2d> line, const Eigen::Vector2d& p);
 
 }  // namespace hdprior

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/error.h"
+#include "engine/geom/polygon2d.h"
 #include "engine/io/argoverse_log.h"
 #include "engine/lidar/ground_segmentation.h"
 #include "engine/lidar/sweep_points.h"
@@ -36,20 +37,6 @@ struct Line {
   std::array<double, kBins> sum{};
   std::array<int, kBins> count{};
 };
-
-std::optional<double> leftOffset(const std::vector<Vec2>& line, const Vec2& p) {
-  std::optional<double> best;
-  for (size_t i = 0; i + 1 < line.size(); ++i) {
-    const Vec2 d = line[i + 1] - line[i];
-    const double l2 = d.squaredNorm();
-    if (l2 < 1e-12) continue;
-    const double t = (p - line[i]).dot(d) / l2;
-    if (t < 0.0 || t > 1.0) continue;
-    const double o = (d.x() * (p.y() - line[i].y()) - d.y() * (p.x() - line[i].x())) / std::sqrt(l2);
-    if (!best || std::abs(o) < std::abs(*best)) best = o;
-  }
-  return best;
-}
 
 int median(std::vector<int> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());

@@ -14,20 +14,32 @@
 namespace hdprior {
 namespace {
 
+// The shared log's map (without NDT grids) and, for each of its sweeps, the sweep labelled at its
+// true pose and its alignment at any pose.
+struct RealSweeps {
+  ArgoverseLog log{test::sharedLog()};
+  HdMap map = HdMap::load(log.mapFiles(), [] {
+    HdMapOptions o;
+    o.ndtCellSizes.clear();
+    return o;
+  }());
+  SE3 truth(size_t i) const { return log.cityTEgo().at(log.sweepTimestamps()[i]); }
+  LabelledSweep labelled(size_t i) const { return labelSweep(*log.sweep(i), levelRotation(truth(i)), defaultConfig().roadPoints); }
+  SweepAlignment at(const LabelledSweep& sweep, const SE3& pose) const {
+    return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, &map.groundHeight(), ChangeOptions{});
+  }
+};
+
 TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFromAMovedOne) {
-  const ArgoverseLog log(test::sharedLog());
-  HdMapOptions mapOptions;
-  mapOptions.ndtCellSizes.clear();
-  const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
+  const RealSweeps real;
   const ChangeOptions o;
-  for (size_t i = 0; i < log.sweepCount(); ++i) {
-    const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
-    const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
-    const GroundHeight* ground = &map.groundHeight();
-    const SweepAlignment a = sweepAlignment(sweep, truth, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, o);
+  for (size_t i = 0; i < real.log.sweepCount(); ++i) {
+    const SE3 truth = real.truth(i);
+    const LabelledSweep sweep = real.labelled(i);
+    const SweepAlignment a = real.at(sweep, truth);
     SE3 moved = truth;
     moved.translation() += truth.linear() * Eigen::Vector3d(0.0, 2.5, 0.0);
-    const SweepAlignment m = sweepAlignment(sweep, moved, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, o);
+    const SweepAlignment m = real.at(sweep, moved);
     std::printf("sweep %zu: %d kerb points, %d on the map at the true pose (best shift %.2f m: %d); moved 2.5 m left: %d on it, "
                 "%d shifted (%.2f, %.2f) on %d polygons\n",
                 i, a.kerbs, a.alignedAtPose, a.shift.norm(), a.alignedShifted, m.alignedAtPose, m.alignedShifted, m.shift.x(),
@@ -43,18 +55,14 @@ TEST(SweepAlignmentReal, TheKerbsLieOnTheMapAtTheTruePoseAndMeetItShiftedBackFro
 // At the true pose the road under the car lies on the ground-height raster; raised by 0.4 m (or
 // lowered), the pose is off and the sweep is left out, kerbs or not.
 TEST(SweepAlignmentReal, TheRoadUnderTheCarLiesOnTheRasterAtTheTruePose) {
-  const ArgoverseLog log(test::sharedLog());
-  HdMapOptions mapOptions;
-  mapOptions.ndtCellSizes.clear();
-  const HdMap map = HdMap::load(log.mapFiles(), mapOptions);
+  const RealSweeps real;
   const ChangeOptions o;
-  for (size_t i = 0; i < log.sweepCount(); ++i) {
-    const SE3 truth = log.cityTEgo().at(log.sweepTimestamps()[i]);
-    const LabelledSweep sweep = labelSweep(*log.sweep(i), levelRotation(truth), defaultConfig().roadPoints);
+  for (size_t i = 0; i < real.log.sweepCount(); ++i) {
+    const LabelledSweep sweep = real.labelled(i);
     const auto at = [&](double dz) {
-      SE3 pose = truth;
+      SE3 pose = real.truth(i);
       pose.translation().z() += dz;
-      return sweepAlignment(sweep, pose, map.boundaryDistance(), map.vectorMap().drivableAreas, &map.groundHeight(), o);
+      return real.at(sweep, pose);
     };
     const SweepAlignment a = at(0.0);
     std::printf("sweep %zu: %d road points within 10 m on the raster, %.3f m over it\n", i, a.roadOnRaster, a.roadOverRaster);
