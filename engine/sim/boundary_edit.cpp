@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/geom/smoothstep.h"
+
 namespace hdprior {
 namespace {
 
@@ -27,11 +29,6 @@ std::optional<Ring2> withSide(const Ring2& rot, size_t m, const Ring2& side) {
   out.insert(out.end(), rot.begin() + ptrdiff_t(m), rot.end());
   if (!isSimpleRing(out)) return std::nullopt;
   return out;
-}
-
-double smoothstep(double u) {
-  u = std::clamp(u, 0.0, 1.0);
-  return u * u * (3.0 - 2.0 * u);
 }
 
 }  // namespace

@@ -5,17 +5,14 @@
 #include <random>
 #include <unordered_set>
 
+#include "engine/geom/smoothstep.h"
+
 namespace hdprior {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
 
 constexpr double kCell = 0.5;  // metres, of the fields' grid
-
-double smoothstep(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
 
 // A band-limited field in [-1, 1]: waves of random direction and phase with wavelengths in
 // [minWavelength, maxWavelength], amplitudes summing to 1.
