@@ -55,18 +55,9 @@ std::string misalignedDetail(const std::vector<MisalignedSweep>& sweeps, size_t 
 
 std::vector<RunEvent> mapChangeEvents(const MapChangeReport& report) {
   std::vector<RunEvent> events;
-  for (const DrivableAreaVerdict& v : report.drivableAreas) {
-    if (v.verdict != MapVerdict::Contradicted || v.bestFrame < 0) continue;
-    const std::string detail = areaDetail(v, report.stretches);
-    if (!detail.empty()) events.push_back({RunEvent::Kind::MapChange, 0, size_t(v.bestFrame), detail});
-  }
-  for (const OffRoadInside& o : report.offRoad) {
-    if (o.region.bestFrame < 0) continue;
-    char b[200];
-    std::snprintf(b, sizeof b, "drivable area %lld: %.0f m2 of ground off the road inside it, %.1f m deep, %.1f times as bright as the road (confidence %.2f)",
-                  (long long)o.areaId, o.region.area, o.region.depth, o.brightness, o.region.confidence);
-    events.push_back({RunEvent::Kind::MapChange, 0, size_t(o.region.bestFrame), b});
-  }
+  for (const DrivableAreaVerdict& v : report.drivableAreas)
+    if (v.verdict == MapVerdict::Contradicted && v.bestFrame >= 0)
+      events.push_back({RunEvent::Kind::MapChange, 0, size_t(v.bestFrame), areaDetail(v, report.stretches)});
   for (const MissingSurface& m : report.missing) {
     if (m.bestFrame < 0) continue;
     char b[160];

@@ -23,12 +23,6 @@ struct ChangeOptions {
   double missingGap = 1.0;      // road cells this far outside every polygon are candidates of a missing area ...
   double missingMinDepth = 3.0; // ... which must reach this far out ...
   double missingMinArea = 25.0; // ... and cover this many square metres
-  // Ground off the road inside the drivable area (the same depth and area) is a change when its
-  // cells are this many times as bright as the log's road: on the real sweeps the ground beside
-  // the road reads 2.0-2.4 times it (cells seen from 15-30 / 0-15 m), the ground inside that the
-  // walk did not reach up to 1.5 (a far ring's intensity is a few counts); in the simulator road
-  // the walk did not reach 0.8-1.05 and sidewalks 1.2-4.
-  double offRoadBrightness = 1.6;
   // How far off the poses may be, per metre driven from the first (the built-in odometry lost 2-3 %
   // in its worst turns): a sweep whose kerbs line up with the map only under a shift this large
   // is left out as a pose error; a larger shift is a map change.

@@ -71,22 +71,6 @@ json missingFeature(const MissingSurface& m) {
             {"change", "lane_geometry_change"}}}};
 }
 
-json offRoadFeature(const OffRoadInside& o) {
-  json evidence = {{"kind", "off_road_inside"},
-                   {"area_m2", number(o.region.area)},
-                   {"depth_m", number(o.region.depth)},
-                   {"ground_points", o.region.roadPoints},
-                   {"brightness_over_road", number(o.brightness)}};
-  return feature(polygon(o.region.outline), {{"element", "drivable_area"},
-                                             {"id", o.areaId},
-                                             {"verdict", "contradicted"},
-                                             {"confidence", number(o.region.confidence)},
-                                             {"first_frame", o.region.firstFrame},
-                                             {"best_frame", o.region.bestFrame},
-                                             {"evidence", evidence},
-                                             {"change", "lane_geometry_change"}});
-}
-
 // In the simulator's labels' terms: a mapped crossing without paint was inserted into the map; a
 // painted one the map lacks was deleted from it.
 json crossingFeature(const CrossingVerdict& c) {
@@ -155,7 +139,6 @@ std::string changesGeoJson(const MapChangeReport& report, const std::string& log
   for (const BoundaryStretch& s : report.stretches)
     if (s.samples > 0) features.push_back(stretchFeature(s));
   for (const MissingSurface& m : report.missing) features.push_back(missingFeature(m));
-  for (const OffRoadInside& o : report.offRoad) features.push_back(offRoadFeature(o));
   for (const CrossingVerdict& c : report.crossings)
     if (c.roadCells > 0) features.push_back(crossingFeature(c));
   for (const MissingCrossing& m : report.missingCrossings) features.push_back(missingCrossingFeature(m));
@@ -199,7 +182,6 @@ std::string changeSummaryJson(const MapChangeReport& report, const std::string& 
               {"contradicted_drivable_areas", contradicted},
               {"boundary_stretches", stretches},
               {"missing_surfaces", report.missing.size()},
-              {"off_road_inside", report.offRoad.size()},
               {"pedestrian_crossings", crossings},
               {"missing_crossings", report.missingCrossings.size()},
               {"lane_line_stretches", laneLines}}

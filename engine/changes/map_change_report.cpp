@@ -3,7 +3,6 @@
 #include <future>
 #include <map>
 
-#include "engine/changes/ground_brightness.h"
 #include "engine/changes/surface_classes.h"
 #include "engine/geom/se2.h"
 #include "engine/io/argoverse_log.h"
@@ -75,23 +74,6 @@ std::vector<DrivableAreaVerdict> drivableAreaVerdicts(const VectorMap& map, cons
   return out;
 }
 
-namespace {
-
-// A polygon with ground off the road inside it is contradicted, whatever its boundary said.
-void contradictArea(const OffRoadInside& o, std::vector<DrivableAreaVerdict>& verdicts) {
-  for (DrivableAreaVerdict& v : verdicts) {
-    if (v.id != o.areaId) continue;
-    if (v.verdict != MapVerdict::Contradicted || o.region.confidence > v.confidence) {
-      v.confidence = o.region.confidence;
-      v.bestFrame = o.region.bestFrame;
-      v.firstFrame = o.region.firstFrame;
-    }
-    v.verdict = MapVerdict::Contradicted;
-  }
-}
-
-}  // namespace
-
 MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, const ChangeOptions& options) {
   MapChangeReport report;
   classifySurface(evidence, options);
@@ -102,10 +84,7 @@ MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, cons
       report.stretches.push_back(std::move(s));
     }
   report.drivableAreas = drivableAreaVerdicts(map.vectorMap(), report.stretches);
-  const GroundHeight* ground = map.hasGroundHeight() ? &map.groundHeight() : nullptr;
-  report.missing = findMissingSurfaces(evidence, distance, ground, options);
-  report.offRoad = findOffRoadInside(evidence, map.vectorMap(), distance, ground, options);
-  for (const OffRoadInside& o : report.offRoad) contradictArea(o, report.drivableAreas);
+  report.missing = findMissingSurfaces(evidence, distance, map.hasGroundHeight() ? &map.groundHeight() : nullptr, options);
   report.evidence = std::move(evidence);
   return report;
 }
@@ -124,14 +103,12 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
     LabelledSweep sweep;
     SweepPaint paint;
     SweepAlignment alignment;
-    std::vector<float> brightness;
   };
   auto label = [&](size_t k) {
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k].index]);
     const std::shared_ptr<const LidarSweep> sweep = log.sweep(sweeps[k].index);
-    Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}, {}, {}};
+    Labelled out{labelSweep(*sweep, levelRotation(cityTEgo), roadPoints), {}, {}};
     out.paint = findSweepPaint(*sweep, out.sweep, options);
-    out.brightness = groundBrightness(*sweep, out.sweep);
     out.alignment = sweepAlignment(out.sweep, cityTEgo, map.boundaryDistance(), map.vectorMap().drivableAreas, ground, options);
     return out;
   };
@@ -143,7 +120,7 @@ MapChangeReport detectMapChanges(const ArgoverseLog& log, const HdMap& map, cons
       return;
     }
     const SE3 cityTEgo = poses.at(log.sweepTimestamps()[sweeps[k].index]);
-    evidence.add(frame, labelled.sweep, cityTEgo, ground, labelled.brightness);
+    evidence.add(frame, labelled.sweep, cityTEgo, ground);
     crossings.add(frame, labelled.paint, cityTEgo);
     laneLines.add(frame, labelled.paint, cityTEgo);
     ++frames;

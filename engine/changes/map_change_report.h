@@ -11,7 +11,6 @@
 #include "engine/changes/lane_line_check.h"
 #include "engine/changes/map_verdict.h"
 #include "engine/changes/missing_surface.h"
-#include "engine/changes/off_road_inside.h"
 #include "engine/changes/sweep_alignment.h"
 #include "engine/geom/pose_trajectory.h"
 #include "engine/lidar/sweep_road_points.h"
@@ -35,7 +34,6 @@ struct MapChangeReport {
   std::vector<BoundaryStretch> stretches;         // of the polygons whose boundary the evidence covers
   std::vector<DrivableAreaVerdict> drivableAreas;  // every polygon of the map, in its order
   std::vector<MissingSurface> missing;
-  std::vector<OffRoadInside> offRoad;  // ground off the road inside the drivable areas
   std::vector<CrossingVerdict> crossings;  // every pedestrian crossing of the map, in its order (detectMapChanges)
   std::vector<MissingCrossing> missingCrossings;
   std::vector<LaneLineStretch> laneLines;  // the stretches of painted lane lines with road seen beside them

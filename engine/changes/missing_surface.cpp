@@ -96,36 +96,32 @@ std::vector<Eigen::Vector2d> cellOutline(const GridGeometry& g, const std::vecto
   return outline;
 }
 
-std::vector<SurfaceRegion> surfaceBeyondBoundary(const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
-                                                 const GroundHeight* groundHeight, Surface surface, double side,
-                                                 const ChangeOptions& options) {
+std::vector<MissingSurface> findMissingSurfaces(const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
+                                                const GroundHeight* groundHeight, const ChangeOptions& options) {
   const GridGeometry& g = evidence.geometry();
   std::vector<uint8_t> mask(g.cellCount(), 0);
-  std::vector<float> beyond(g.cellCount(), 0.0f);
+  std::vector<float> outside(g.cellCount(), 0.0f);
   for (int r = 0; r < g.rows; ++r)
     for (int c = 0; c < g.cols; ++c) {
-      if (evidence.surface(g.index(c, r)) != surface) continue;
+      if (evidence.surface(g.index(c, r)) != Surface::Road) continue;
       const Eigen::Vector2d centre = g.cellCentre(c, r);
-      double d = side * drivableDistance.distance(centre);
-      if (std::isnan(d)) d = side > 0 ? options.missingMinDepth : 0.0;  // beyond the whole map's field: far from any polygon
+      double d = drivableDistance.distance(centre);
+      if (std::isnan(d)) d = options.missingMinDepth;  // beyond the whole map's field: far from any polygon
       if (!(d > options.missingGap)) continue;
       if (groundHeight && !std::isfinite(groundHeight->heightAt(centre))) continue;
       mask[g.index(c, r)] = 1;
-      beyond[g.index(c, r)] = float(d);
+      outside[g.index(c, r)] = float(d);
     }
-  std::vector<SurfaceRegion> out;
+  std::vector<MissingSurface> out;
   const double cellArea = g.resolution * g.resolution;
-  for (std::vector<int>& cells : components(g, mask)) {
-    SurfaceRegion region;
-    MissingSurface& m = region.surface;
+  for (const std::vector<int>& cells : components(g, mask)) {
+    MissingSurface m;
     m.area = double(cells.size()) * cellArea;
     float bestRange = 1e9f;
-    region.shallowest = 1e9;
     for (int i : cells) {
       const SurfaceCell& cell = evidence.cells()[size_t(i)];
-      region.shallowest = std::min(region.shallowest, double(beyond[size_t(i)]));
-      if (beyond[size_t(i)] > m.depth) m.depth = beyond[size_t(i)], region.deepest = g.cellCentre(i % g.cols, i / g.cols);
-      m.roadPoints += surface == Surface::Road ? cell.road : cell.offRoad;
+      m.depth = std::max(m.depth, double(outside[size_t(i)]));
+      m.roadPoints += cell.road;
       if (cell.firstFrame >= 0 && (m.firstFrame < 0 || cell.firstFrame < m.firstFrame)) m.firstFrame = cell.firstFrame;
       if (cell.bestRange < bestRange) bestRange = cell.bestRange, m.bestFrame = cell.bestFrame;
     }
@@ -133,17 +129,8 @@ std::vector<SurfaceRegion> surfaceBeyondBoundary(const SurfaceEvidence& evidence
     m.outline = cellOutline(g, cells);
     // Surer the larger it is and the farther it reaches beyond what the map's error could explain.
     m.confidence = (1.0 - std::exp(-m.area / options.missingMinArea)) * std::min(1.0, m.depth / (2.0 * options.missingMinDepth));
-    region.cells = std::move(cells);
-    out.push_back(std::move(region));
+    out.push_back(std::move(m));
   }
-  return out;
-}
-
-std::vector<MissingSurface> findMissingSurfaces(const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
-                                                const GroundHeight* groundHeight, const ChangeOptions& options) {
-  std::vector<MissingSurface> out;
-  for (SurfaceRegion& r : surfaceBeyondBoundary(evidence, drivableDistance, groundHeight, Surface::Road, 1.0, options))
-    out.push_back(std::move(r.surface));
   return out;
 }
 

@@ -28,22 +28,6 @@ struct MissingSurface {
 std::vector<MissingSurface> findMissingSurfaces(const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
                                                 const GroundHeight* groundHeight, const ChangeOptions& options);
 
-// A region of one surface on one side of the map's boundary: its cells (evidence grid indices),
-// the centre of the one farthest from the boundary and the distance of the nearest (metres).
-struct SurfaceRegion {
-  MissingSurface surface;
-  std::vector<int> cells;
-  Eigen::Vector2d deepest = Eigen::Vector2d::Zero();
-  double shallowest = 0.0;
-};
-
-// The connected cells (4-neighbours) of `surface` lying more than options.missingGap beyond the
-// drivable area's boundary on `side` (+1 outside, -1 inside), reaching options.missingMinDepth and
-// covering options.missingMinArea (findMissingSurfaces is Road outside).
-std::vector<SurfaceRegion> surfaceBeyondBoundary(const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
-                                                 const GroundHeight* groundHeight, Surface surface, double side,
-                                                 const ChangeOptions& options);
-
 // The outer outline of a set of grid cells (one 4-connected component), along the cell edges,
 // counter-clockwise, collinear vertices dropped.
 std::vector<Eigen::Vector2d> cellOutline(const GridGeometry& geometry, const std::vector<int>& cellIndices);

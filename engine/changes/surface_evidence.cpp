@@ -32,8 +32,7 @@ SurfaceEvidence SurfaceEvidence::around(const std::vector<Eigen::Vector2d>& posi
   return SurfaceEvidence(g);
 }
 
-void SurfaceEvidence::add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground,
-                          const std::vector<float>& brightness) {
+void SurfaceEvidence::add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground) {
   // labelSweep levelled the points with the pose's roll and pitch; what is left is the yaw.
   const double yaw = yawOf(cityTEgo);
   const Eigen::Matrix2d r = Eigen::Rotation2Dd(yaw).toRotationMatrix();
@@ -48,10 +47,6 @@ void SurfaceEvidence::add(int frame, const LabelledSweep& sweep, const SE3& city
     if (sweep.road[i]) addSaturating(cell.road);
     else addSaturating(cell.offRoad);
     if (sweep.road[i] == kCurbPoint) addSaturating(cell.curb);
-    if (!brightness.empty() && cell.groundPoints < std::numeric_limits<uint16_t>::max()) {
-      cell.brightnessSum += brightness[i];
-      ++cell.groundPoints;
-    }
     if (ground) {
       const double raster = ground->bilinearAt(city);
       if (std::isfinite(raster)) {

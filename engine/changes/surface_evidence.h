@@ -1,5 +1,4 @@
 #pragma once
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -20,14 +19,11 @@ struct SurfaceCell {
   uint16_t curb = 0;     // road points where the walk ended at a height step (kerbs)
   float groundOffsetSum = 0;  // of the ground points: height minus the ground-height raster, summed
   uint16_t groundOffsetCount = 0;
-  float brightnessSum = 0;  // of the ground points: groundBrightness, summed (over groundPoints)
-  uint16_t groundPoints = 0;
   int32_t firstFrame = -1;  // the first frame that saw the cell
   int32_t bestFrame = -1;   // the frame that saw it from closest
   float bestRange = 1e9f;   // metres from that frame's ego origin
 
   bool observed() const { return road + offRoad > 0; }
-  float brightness() const { return groundPoints > 0 ? brightnessSum / float(groundPoints) : NAN; }
 };
 
 // A cell's surface as the change check reads it (classifySurface).
@@ -47,10 +43,8 @@ class SurfaceEvidence {
   static SurfaceEvidence around(const std::vector<Eigen::Vector2d>& positions, double margin, double cell);
 
   // The labelled sweep of `frame` at city_T_ego (its points are levelled: labelSweep with the
-  // pose's roll and pitch). `ground` gives each ground point's offset to the raster (may be null);
-  // `brightness` is groundBrightness of the sweep (or empty).
-  void add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground,
-           const std::vector<float>& brightness = {});
+  // pose's roll and pitch). `ground` gives each ground point's offset to the raster (may be null).
+  void add(int frame, const LabelledSweep& sweep, const SE3& cityTEgo, const GroundHeight* ground);
 
   const GridGeometry& geometry() const { return geometry_; }
   const std::vector<SurfaceCell>& cells() const { return cells_; }

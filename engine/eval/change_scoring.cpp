@@ -31,8 +31,7 @@ struct Place {
   bool closed = false;
 };
 
-// Where each report of an element lies: a contradicted area's contradicted stretches and ground off
-// the road inside it, a missing
+// Where each report of an element lies: a contradicted area's contradicted stretches, a missing
 // surface's outline; a contradicted or missing crossing's outline; a lane line's contradicted
 // stretches.
 std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapElement element) {
@@ -55,8 +54,6 @@ std::vector<std::vector<Place>> reportPlaces(const MapChangeReport& report, MapE
     std::vector<Place> places;
     for (const BoundaryStretch& s : report.stretches)
       if (s.areaId == v.id && s.verdict == MapVerdict::Contradicted) places.push_back({s.line, false});
-    for (const OffRoadInside& o : report.offRoad)
-      if (o.areaId == v.id) places.push_back({o.region.outline, true});
     out.push_back(std::move(places));
   }
   for (const MissingSurface& m : report.missing) out.push_back({{m.outline, true}});

@@ -62,7 +62,6 @@ void ChangesLayer::build(const Scene& scene) {
       else if (show_ == 2) strokes.polyline(onGround(scene, s.line, false), 0.15f, unobserved_);
     }
     for (const MissingSurface& m : report.missing) strokes.polyline(onGround(scene, m.outline, true), 0.45f, missing_);
-    for (const OffRoadInside& o : report.offRoad) strokes.polyline(onGround(scene, o.region.outline, true), 0.45f, contradicted_);
     for (const CrossingVerdict& c : report.crossings) {
       if (c.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, c.outline, true), 0.45f, contradicted_);
       else if (c.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, c.outline, true), 0.2f, consistent_);

@@ -1,6 +1,6 @@
 // A street seen by the lidar, made up point by point: a road surface between kerbs at y = ±5 m
 // (or wherever the world function puts it) and raised sidewalks beyond, as one labelled sweep
-// with its ego at the city origin. The road is asphalt (brightness 1), the rest 2.5 times as bright.
+// with its ego at the city origin.
 #pragma once
 #include <functional>
 
@@ -22,7 +22,6 @@ struct GroundPoint {
 // Points every 0.1 m over [-20, 20] x [-20, 20]; `world` says what lies at (x, y).
 inline SurfaceEvidence streetEvidence(const std::function<GroundPoint(double, double)>& world) {
   LabelledSweep sweep;
-  std::vector<float> brightness;
   for (double x = -19.95; x < 20; x += 0.1)
     for (double y = -19.95; y < 20; y += 0.1) {
       const GroundPoint g = world(x, y);
@@ -30,14 +29,13 @@ inline SurfaceEvidence streetEvidence(const std::function<GroundPoint(double, do
       sweep.points.emplace_back(x, y, z);
       sweep.ground.push_back(1);
       sweep.road.push_back(g.kerb ? kCurbPoint : g.walked ? kRoadPoint : 0);
-      brightness.push_back(g.road ? 1.0f : 2.5f);
     }
   GridGeometry grid;
   grid.origin = {-25, -25};
   grid.resolution = 0.5;
   grid.cols = grid.rows = 100;
   SurfaceEvidence evidence(grid);
-  evidence.add(0, sweep, SE3::Identity(), nullptr, brightness);
+  evidence.add(0, sweep, SE3::Identity(), nullptr);
   return evidence;
 }
 
