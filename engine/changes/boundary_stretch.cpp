@@ -91,11 +91,15 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   }
   const double share = double(s.contradicted) / double(s.observed);
   const bool contradicted = s.contradicted >= o.minSamples && share >= o.contradictedShare;
-  // A kerb inside the boundary is also what a raised island the map paints over, or a road the walk
-  // labelled in patches, shows: it takes twice the samples, and short of them nothing is said.
-  if (contradicted && median(against) < 0 && s.contradicted < 2 * o.minSamples) {
+  // Too few contradicting samples to contradict the map and too many to agree with it: nothing is
+  // said, and the evidence names what the few saw. A kerb inside the boundary is also what a raised
+  // island the map paints over, or a road the walk labelled in patches, shows: it takes twice the
+  // samples.
+  const bool undecided = !contradicted && share >= o.contradictedShare;
+  const bool islandLike = contradicted && median(against) < 0 && s.contradicted < 2 * o.minSamples;
+  if (undecided || islandLike) {
     s.offset = median(against);
-    s.evidence = "kerb_inside";
+    s.evidence = evidenceOf(s.offset, true, 2 * againstAcrossGap > s.contradicted);
     return s;
   }
   s.verdict = contradicted ? MapVerdict::Contradicted : MapVerdict::Consistent;

@@ -95,6 +95,32 @@ TEST(MapChangeReport, ABoundaryDrawnTwoMetresOutsideTheKerbIsContradictedWhereTh
   EXPECT_GE(contradicted, 2);  // those whose kerb the lidar saw within ChangeOptions::edgeRange (the sweep is at the origin)
 }
 
+TEST(MapChangeReport, AStretchWhoseFewSamplesMostlyContradictItIsUnobservedNotConsistent) {
+  // The north kerb steps 2 m out over 4 m of one stretch (x in [2, 6)): too few samples to
+  // contradict the map, too many to agree with it.
+  auto world = [](double x, double y) {
+    test::GroundPoint g = test::straightStreet(x, y);
+    if (x >= 2.0 && x < 6.0 && y >= 4.8 && y < 7.0) g = {true, true, y > 6.8};
+    return g;
+  };
+  const MapChangeReport r = judgeMapChanges(test::streetEvidence(world), test::streetMap({test::rectangle(-100, -5, 100, 5)}),
+                                            ChangeOptions{});
+  bool seen = false;
+  for (const BoundaryStretch& s : r.stretches) {
+    if (s.areaId != 1 || std::abs(s.line.front().y() - 5.0) > 0.01) continue;
+    const double lo = std::min(s.line.front().x(), s.line.back().x()), hi = std::max(s.line.front().x(), s.line.back().x());
+    if (lo > 2.0 || hi < 6.0) continue;
+    seen = true;
+    EXPECT_GT(s.contradicted, 0);
+    EXPECT_LT(s.contradicted, ChangeOptions{}.minSamples);
+    EXPECT_GE(double(s.contradicted), ChangeOptions{}.contradictedShare * s.observed);
+    EXPECT_EQ(s.verdict, MapVerdict::Unobserved);
+    EXPECT_EQ(s.evidence, "road_beyond_boundary");
+    EXPECT_NEAR(s.offset, 2.0, 0.3);
+  }
+  EXPECT_TRUE(seen);
+}
+
 TEST(MapChangeReport, WhereTheWalkStoppedShortOfTheBoundaryWithoutAKerbNothingIsRead) {
   // The walk ends 2 m inside the map's boundary with no kerb there (a parked car, a gap): no verdict.
   auto world = [](double x, double y) {
