@@ -30,6 +30,9 @@ struct BoundaryStretch {
   double groundOffset = 0.0;  // lidar ground minus the ground-height raster, mean, metres (NaN: none)
   int firstFrame = -1, bestFrame = -1;
   double nearestView = 1e9;  // metres: the nearest the lidar came to the edges the verdict rests on
+
+  // Unobserved though samples contradict the map: too few of them to say either way.
+  bool undecided() const { return verdict == MapVerdict::Unobserved && contradicted > 0 && !evidence.empty() && evidence != "road_continues"; }
 };
 
 // The verdicts of one polygon's boundary stretches. Samples that lie inside another polygon

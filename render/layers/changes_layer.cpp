@@ -59,6 +59,7 @@ void ChangesLayer::build(const Scene& scene) {
       if (s.samples == 0) continue;
       if (s.verdict == MapVerdict::Contradicted) strokes.polyline(onGround(scene, s.line, false), 0.6f, contradicted_);
       else if (s.verdict == MapVerdict::Consistent) strokes.polyline(onGround(scene, s.line, false), 0.25f, consistent_);
+      else if (s.undecided()) strokes.polyline(onGround(scene, s.line, false), 0.35f, undecided_);
       else if (show_ == 2) strokes.polyline(onGround(scene, s.line, false), 0.15f, unobserved_);
     }
     for (const MissingSurface& m : report.missing) strokes.polyline(onGround(scene, m.outline, true), 0.45f, missing_);
@@ -94,7 +95,10 @@ void ChangesLayer::draw(const DrawContext& context) const {
 
 std::vector<MarkerKey> ChangesLayer::markerKeys() const {
   if (!analysis_ || !analysis_->changes) return {};
-  std::vector<MarkerKey> keys = {{"contradicted", contradicted_}, {"consistent", consistent_}, {"missing surface or crossing", missing_}};
+  std::vector<MarkerKey> keys = {{"contradicted", contradicted_},
+                                 {"consistent", consistent_},
+                                 {"too few samples to tell (some contradict)", undecided_},
+                                 {"missing surface or crossing", missing_}};
   if (show_ >= 1) {
     keys.push_back({"lidar: road", road_});
     keys.push_back({"lidar: beside the road", notRoad_});
@@ -110,7 +114,7 @@ std::vector<LayerOption> ChangesLayer::options() {
   std::vector<LayerOption> o = {
       LayerOption::choice("show", &show_, {"verdicts", "verdicts and lidar surface", "everything"}, true)};
   o.push_back(LayerOption::choice("labelled changes", &labels_, {"hidden", "shown"}, true));
-  for (auto [label, color] : {std::pair{"contradicted", &contradicted_}, {"consistent", &consistent_}, {"missing", &missing_},
+  for (auto [label, color] : {std::pair{"contradicted", &contradicted_}, {"consistent", &consistent_}, {"too few to tell", &undecided_}, {"missing", &missing_},
                               {"labelled change", &labelled_}}) {
     o.push_back(LayerOption::colorPicker(label, color));
     o.back().rebuilds = true;

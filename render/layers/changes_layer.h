@@ -29,7 +29,7 @@ class ChangesLayer : public Layer {
   int show_ = 1;  // 0: verdicts, 1: verdicts and the lidar's surface, 2: also the unobserved stretches
   int labels_ = 1;  // a simulated log's labelled changes: 0 hidden, 1 shown
   Eigen::Vector4f contradicted_{1.0f, 0.15f, 0.15f, 1.0f}, consistent_{0.25f, 0.95f, 0.35f, 1.0f},
-      unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, missing_{1.0f, 0.2f, 1.0f, 1.0f}, labelled_{0.1f, 0.95f, 0.95f, 1.0f};
+      unobserved_{0.6f, 0.6f, 0.6f, 0.5f}, undecided_{1.0f, 0.95f, 0.1f, 1.0f}, missing_{1.0f, 0.2f, 1.0f, 1.0f}, labelled_{0.1f, 0.95f, 0.95f, 1.0f};
   Eigen::Vector4f road_{0.3f, 0.5f, 0.95f, 0.4f}, notRoad_{0.2f, 0.55f, 0.25f, 0.45f};
   Eigen::Vector4f paintOnMap_{1.0f, 1.0f, 1.0f, 0.9f}, paintOffMap_{1.0f, 0.6f, 0.1f, 0.9f};
 };

@@ -115,10 +115,16 @@ TEST(MapChangeReport, AStretchWhoseFewSamplesMostlyContradictItIsUnobservedNotCo
     EXPECT_LT(s.contradicted, ChangeOptions{}.minSamples);
     EXPECT_GE(double(s.contradicted), ChangeOptions{}.contradictedShare * s.observed);
     EXPECT_EQ(s.verdict, MapVerdict::Unobserved);
+    EXPECT_TRUE(s.undecided());  // the changes layer draws it apart from the stretches nothing was seen of
     EXPECT_EQ(s.evidence, "road_beyond_boundary");
     EXPECT_NEAR(s.offset, 2.0, 0.3);
   }
   EXPECT_TRUE(seen);
+  for (const BoundaryStretch& s : r.stretches) {
+    if (s.verdict != MapVerdict::Unobserved || s.contradicted == 0) {
+      EXPECT_FALSE(s.undecided()) << "stretch " << s.index;
+    }
+  }
 }
 
 TEST(MapChangeReport, WhereTheWalkStoppedShortOfTheBoundaryWithoutAKerbNothingIsRead) {
@@ -183,8 +189,11 @@ TEST(MapChangeReport, RoadTheMapLacksIsAMissingSurfaceWithItsOutline) {
   EXPECT_NEAR(minY, 6.0, 0.5);
   EXPECT_GT(m.confidence, 0.9);
   // The street's boundary across the side street's mouth is open road, not a kerb in the wrong place.
-  for (const BoundaryStretch& s : judged(r, 1))
-    if (std::abs(s.line.front().y() - 5.0) < 0.01) EXPECT_NE(s.evidence, "kerb_inside");
+  for (const BoundaryStretch& s : judged(r, 1)) {
+    if (std::abs(s.line.front().y() - 5.0) < 0.01) {
+      EXPECT_NE(s.evidence, "kerb_inside");
+    }
+  }
 }
 
 }  // namespace
