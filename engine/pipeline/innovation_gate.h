@@ -22,7 +22,9 @@ namespace hdprior {
 // pose (100 m, 90 deg), and is carried by the odometry; while the next gated priors pass its gate
 // they form one run. `reanchorPriors` of them in a run agree with one another and not with the
 // prediction: the prediction is what went wrong, the gate widens by the disagreement and the whole
-// run goes in.
+// run goes in. Unless the odometry could not have drifted that far from the run's pose by the run's
+// first prior (withinOdometryReach): then the map is what went wrong there (a polygon shifted under
+// the car), and the run stays out however long it grows.
 class InnovationGate {
  public:
   InnovationGate() = default;
@@ -43,8 +45,19 @@ class InnovationGate {
  private:
   bool followGatedRun(size_t keyframe, const PosePrior& prior, Verdict& verdict);
 
+  // Whether the odometry could have drifted or slipped from the truth as far as the run's pose is
+  // from it, by the run's first prior.
+  bool withinOdometryReach(const Eigen::Vector3d& challengerPose) const;
+
   PlanarKalman gate_;
   std::optional<PlanarKalman> challenger_;
+  // Where the odometry alone puts the pose, and the metres and radians it has driven and turned
+  // since the start; at the current run's first prior. A run re-anchors only where the odometry
+  // could have drifted or slipped that far by then: a shifted polygon's priors disagree from where
+  // they begin, an odometry failure grows with the drive.
+  Eigen::Vector3d odometry_ = Eigen::Vector3d::Zero();
+  double metres_ = 0.0, turned_ = 0.0;
+  Eigen::Vector2d runStart_ = Eigen::Vector2d::Zero();
   std::vector<size_t> run_;  // keyframes of the gated priors that agree with the challenger
   double probability_ = 0.99;
   int reanchorPriors_ = 3;

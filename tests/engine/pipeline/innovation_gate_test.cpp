@@ -87,5 +87,33 @@ TEST(InnovationGate, PriorsThatDisagreeWithOneAnotherStayOut) {
   }
 }
 
+// A polygon shifted 2 m sideways under the car: the priors say so from the first keyframe, where
+// the odometry cannot have drifted 2 m (1 % of the 2 m driven is one sigma).
+double shiftedFromTheStart(int) { return 2.0; }
+
+TEST(InnovationGate, PriorsThatDisagreeWithTheOdometryFromTheStartNeverReanchor) {
+  const auto v = drive(40, 3, onTheRoad, shiftedFromTheStart);
+  for (int k = 1; k < 40; ++k) {
+    EXPECT_FALSE(v[k].admitted) << k;
+    EXPECT_TRUE(v[k].reanchored.empty()) << k;
+  }
+}
+
+// The same 2 m after 120 m of straight odometry is within what it could have drifted (1.2 m one
+// sigma): the run re-anchors. After 20 m (0.2 m) it is not, however long the run goes on.
+double shiftedAfter120m(int k) { return k >= 60 ? 2.0 : 0.0; }
+double shiftedAfter20m(int k) { return k >= 10 ? 2.0 : 0.0; }
+
+TEST(InnovationGate, ARunReanchorsOnlyWhereTheOdometryCouldHaveDriftedThatFar) {
+  const auto late = drive(70, 3, onTheRoad, shiftedAfter120m);
+  EXPECT_FALSE(late[60].admitted);
+  EXPECT_FALSE(late[61].admitted);
+  EXPECT_TRUE(late[62].admitted);
+  EXPECT_EQ(late[62].reanchored, (std::vector<size_t>{60, 61}));
+  // (Within 40 keyframes: later the gate's own prediction, grown by 60 m without a prior, takes 2 m.)
+  const auto early = drive(40, 3, onTheRoad, shiftedAfter20m);
+  for (int k = 10; k < 40; ++k) EXPECT_FALSE(early[k].admitted) << k;
+}
+
 }  // namespace
 }  // namespace hdprior
