@@ -66,7 +66,10 @@ bool InnovationGate::followGatedRun(size_t keyframe, const PosePrior& prior, Ver
   }
   run_.push_back(keyframe);
   if (int(run_.size()) < reanchorPriors_) return false;
-  if (!withinOdometryReach(challenger_->mean())) return false;  // the run goes on, gated
+  if (!withinOdometryReach(challenger_->mean())) {  // the run goes on, gated
+    v.beyondOdometryReach = true;
+    return false;
+  }
   Eigen::Vector3d d = challenger_->mean() - gate_.mean();
   d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
   gate_.widen(d * d.transpose());

@@ -38,6 +38,7 @@ class InnovationGate {
     double chi2 = 0.0;                // against the graph's prediction
     double quantile = 0.0;            // the chi-square quantile chi2 is held against (0: no gate)
     std::vector<size_t> reanchored;   // admitted: the earlier gated priors of the run that go in with it
+    bool beyondOdometryReach = false;  // gated: its run is farther from the odometry than it could have drifted
   };
   // `outsidePrediction`: the prior is held out as if its chi-square were above the quantile.
   Verdict judge(size_t keyframe, const PosePrior& prior, bool outsidePrediction = false);

@@ -43,8 +43,10 @@ PriorConstraint constraintOf(const MatchResult& match) {
 
 PriorConstraint constraintOf(const KeyframeMatch& k) {
   if (k.gated) {
-    char reason[96];
-    if (k.outsidePrediction) {
+    char reason[128];
+    if (k.beyondOdometryReach) {
+      std::snprintf(reason, sizeof reason, "chi2 %.1f > %.1f, its run beyond the odometry's reach", k.innovationChi2, k.gateQuantile);
+    } else if (k.outsidePrediction) {
       std::snprintf(reason, sizeof reason, "outside the prediction: chi2 %.1f", k.match.gateChi2);
     } else {
       std::snprintf(reason, sizeof reason, "chi2 %.1f > %.1f", k.innovationChi2, k.gateQuantile);

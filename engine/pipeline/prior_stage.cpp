@@ -56,6 +56,7 @@ bool PriorStage::gatePrior(KeyframeMatch& m) {
   m.innovationChi2 = v.chi2;
   m.gateQuantile = v.quantile;
   m.gated = !v.admitted;
+  m.beyondOdometryReach = v.beyondOdometryReach;
   m.hasPrior = v.admitted;
   if (!v.admitted) return false;
   if (driftModels_) {

@@ -39,6 +39,9 @@ struct KeyframeMatch {
   // the prior goes in only with a run of gated priors that agree with it.
   bool outsidePrediction = false;
   double gateQuantile = 0.0;        // the gate's chi-square quantile for the prior (0: no gate)
+  // Gated, and its run of agreeing priors is farther from the odometry than the odometry could have
+  // drifted by the run's start: the map there, not the odometry, is taken for what is wrong.
+  bool beyondOdometryReach = false;
 };
 
 // Loads the sweep of an odometry frame.

@@ -96,6 +96,7 @@ TEST(InnovationGate, PriorsThatDisagreeWithTheOdometryFromTheStartNeverReanchor)
   for (int k = 1; k < 40; ++k) {
     EXPECT_FALSE(v[k].admitted) << k;
     EXPECT_TRUE(v[k].reanchored.empty()) << k;
+    EXPECT_EQ(v[k].beyondOdometryReach, k >= 3) << k;  // from the third, the run is judged and refused
   }
 }
 

@@ -53,6 +53,9 @@ TEST(PriorConstraint, RejectedAndGatedCarryTheirReasonAndFigures) {
   outside.outsidePrediction = true;
   outside.match.gateChi2 = 15.61;
   EXPECT_EQ(constraintOf(outside).label(), "gated: outside the prediction: chi2 15.6");
+  KeyframeMatch beyondReach = outside;
+  beyondReach.beyondOdometryReach = true;
+  EXPECT_EQ(constraintOf(beyondReach).label(), "gated: chi2 14.2 > 9.2, its run beyond the odometry's reach");
   EXPECT_TRUE(constraintOf(gated).lateral);
 
   const std::vector<PriorConstraint> all = {fixedDirections(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero()),
