@@ -18,6 +18,13 @@ constexpr double kDriftPerMetre = 0.01;
 constexpr double kDriftPerRadianTurned = 0.02;
 constexpr double kYawDriftPerMetre = 0.01 * kDegree;
 
+// a - b with the yaw difference wrapped to [-pi, pi].
+Eigen::Vector3d planarDifference(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  Eigen::Vector3d d = a - b;
+  d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
+  return d;
+}
+
 }  // namespace
 
 InnovationGate::InnovationGate(const Eigen::Vector3d& start, double mapErrorLength, double probability, int reanchorPriors)
@@ -70,8 +77,7 @@ bool InnovationGate::followGatedRun(size_t keyframe, const PosePrior& prior, Ver
     v.beyondOdometryReach = true;
     return false;
   }
-  Eigen::Vector3d d = challenger_->mean() - gate_.mean();
-  d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
+  const Eigen::Vector3d d = planarDifference(challenger_->mean(), gate_.mean());
   gate_.widen(d * d.transpose());
   gate_.update(gate_.innovation(prior));
   v.reanchored.assign(run_.begin(), run_.end() - 1);
@@ -81,8 +87,7 @@ bool InnovationGate::followGatedRun(size_t keyframe, const PosePrior& prior, Ver
 }
 
 bool InnovationGate::withinOdometryReach(const Eigen::Vector3d& challengerPose) const {
-  Eigen::Vector3d d = challengerPose - odometry_;
-  d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
+  const Eigen::Vector3d d = planarDifference(challengerPose, odometry_);
   const Eigen::Matrix3d C = challenger_->covariance();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (C + C.transpose()));
   int dof = 0;  // what the run's priors observe (the rest is forgotten: kForgottenPose)
