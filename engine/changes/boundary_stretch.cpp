@@ -5,6 +5,7 @@
 
 #include "engine/changes/boundary_reading.h"
 #include "engine/changes/boundary_samples.h"
+#include "engine/changes/polygon_offset.h"
 #include "engine/map/boundary_distance.h"
 
 namespace hdprior {
@@ -111,26 +112,89 @@ BoundaryStretch judge(const DrivableArea& area, int index, double a0, double a1,
   return s;
 }
 
+// The edges seen near enough to place them (ChangeOptions::edgeRange), of one stretch or of all.
+std::vector<EdgeOffset> edgeOffsets(const std::vector<Reading>& readings, const ChangeOptions& o) {
+  std::vector<EdgeOffset> out;
+  for (const Reading& r : readings)
+    if (r.reading.kind == BoundaryReading::Kind::Edge && r.reading.nearestView <= o.edgeRange) out.push_back({r.sample.point, r.sample.normal, r.reading.offset});
+  return out;
+}
+
+// A stretch not contradicted on its own whose edges lie where the polygon's offset puts them.
+void judgeByPolygon(BoundaryStretch& s, const PolygonOffset& polygon, const std::vector<Reading>& readings, const ChangeOptions& o) {
+  std::vector<double> explained;
+  const std::vector<EdgeOffset> edges = edgeOffsets(readings, o);
+  for (const EdgeOffset& e : edges)
+    if (polygon.explains(e, o)) explained.push_back(e.offset);
+  if (explained.empty() || 2 * explained.size() < edges.size()) return;
+  s.verdict = MapVerdict::Contradicted;
+  s.evidence = "polygon_offset";
+  s.offset = median(explained);
+  s.polygonShift = polygon.translation;
+  s.confidence = polygon.fitShare * saturation(polygon.samples, o.polygonMinSamples);
+  for (const Reading& r : readings)
+    if (r.reading.kind == BoundaryReading::Kind::Edge) s.nearestView = std::min<double>(s.nearestView, r.reading.nearestView);
+}
+
 }  // namespace
 
-std::vector<BoundaryStretch> checkBoundary(const DrivableArea& area, const SurfaceEvidence& evidence,
-                                           const BoundaryDistance& drivableDistance, const ChangeOptions& options) {
-  const double length = perimeter(area.areaBoundary);
-  const int stretches = std::max(1, int(std::round(length / options.stretchLength)));
-  std::vector<std::vector<Reading>> byStretch(static_cast<size_t>(stretches));
-  std::vector<bool> onBoundary(static_cast<size_t>(stretches), false);
+namespace {
+
+// One polygon's boundary samples, read, by stretch.
+struct ReadBoundary {
+  const DrivableArea* area = nullptr;
+  double length = 0.0;
+  std::vector<std::vector<Reading>> byStretch;
+  std::vector<bool> onBoundary;
+  std::vector<EdgeOffset> edges;
+};
+
+ReadBoundary readArea(const DrivableArea& area, const SurfaceEvidence& evidence, const BoundaryDistance& drivableDistance,
+                      const ChangeOptions& options) {
+  ReadBoundary r;
+  r.area = &area;
+  r.length = perimeter(area.areaBoundary);
+  const size_t stretches = size_t(std::max(1, int(std::round(r.length / options.stretchLength))));
+  r.byStretch.resize(stretches);
+  r.onBoundary.assign(stretches, false);
   for (const BoundarySample& s : sampleBoundary(area.areaBoundary, options.sampleSpacing)) {
-    const size_t k = std::min(size_t(stretches) - 1, size_t(s.arc / length * stretches));
+    const size_t k = std::min(stretches - 1, size_t(s.arc / r.length * double(stretches)));
     const double inside = drivableDistance.distance(s.point);
     if (!(std::abs(inside) <= options.seamDepth)) continue;  // a seam, or outside the distance field
-    onBoundary[k] = true;
+    r.onBoundary[k] = true;
     if (!evidence.cellAt(s.point)) continue;
-    byStretch[k].push_back({s, acrossGap(readBoundary(evidence, s, options), s, drivableDistance, options)});
+    r.byStretch[k].push_back({s, acrossGap(readBoundary(evidence, s, options), s, drivableDistance, options)});
   }
+  for (const std::vector<Reading>& readings : r.byStretch)
+    for (const EdgeOffset& e : edgeOffsets(readings, options)) r.edges.push_back(e);
+  return r;
+}
+
+std::vector<EdgeOffset> edgesAround(const std::vector<ReadBoundary>& areas, size_t except) {
+  std::vector<EdgeOffset> out;
+  for (size_t i = 0; i < areas.size(); ++i)
+    if (i != except) out.insert(out.end(), areas[i].edges.begin(), areas[i].edges.end());
+  return out;
+}
+
+}  // namespace
+
+std::vector<BoundaryStretch> checkBoundaries(const std::vector<DrivableArea>& areas, const SurfaceEvidence& evidence,
+                                             const BoundaryDistance& drivableDistance, const ChangeOptions& options) {
+  std::vector<ReadBoundary> read;
+  for (const DrivableArea& area : areas) read.push_back(readArea(area, evidence, drivableDistance, options));
   std::vector<BoundaryStretch> out;
-  for (int k = 0; k < stretches; ++k) {
-    if (!onBoundary[size_t(k)]) continue;
-    out.push_back(judge(area, k, k * length / stretches, (k + 1) * length / stretches, byStretch[size_t(k)], options));
+  for (size_t i = 0; i < read.size(); ++i) {
+    const ReadBoundary& r = read[i];
+    std::optional<PolygonOffset> polygon;
+    if (int(r.edges.size()) >= options.polygonMinSamples) polygon = polygonOffset(r.edges, edgesAround(read, i), options);
+    const int stretches = int(r.byStretch.size());
+    for (int k = 0; k < stretches; ++k) {
+      if (!r.onBoundary[size_t(k)]) continue;
+      const std::vector<Reading>& readings = r.byStretch[size_t(k)];
+      out.push_back(judge(*r.area, k, k * r.length / stretches, (k + 1) * r.length / stretches, readings, options));
+      if (polygon && out.back().verdict != MapVerdict::Contradicted) judgeByPolygon(out.back(), *polygon, readings, options);
+    }
   }
   return out;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,7 +26,8 @@ struct BoundaryStretch {
   // The evidence: where the lidar's road edge lies, metres outwards of the map's boundary
   // (median over the contradicting samples, else over the observed ones), and what it is.
   double offset = 0.0;
-  std::string evidence;  // "kerb_offset" (consistent), "road_beyond_boundary", "road_across_gap", "kerb_inside", "road_continues" or ""
+  std::string evidence;  // "kerb_offset" (consistent), "road_beyond_boundary", "road_across_gap", "kerb_inside", "polygon_offset", "road_continues" or ""
+  Eigen::Vector2d polygonShift = Eigen::Vector2d::Constant(NAN);  // "polygon_offset": the polygon's translation onto the edges seen
   int curbPoints = 0;
   double groundOffset = 0.0;  // lidar ground minus the ground-height raster, mean, metres (NaN: none)
   int firstFrame = -1, bestFrame = -1;
@@ -35,10 +37,11 @@ struct BoundaryStretch {
   bool undecided() const { return verdict == MapVerdict::Unobserved && contradicted > 0 && !evidence.empty() && evidence != "road_continues"; }
 };
 
-// The verdicts of one polygon's boundary stretches. Samples that lie inside another polygon
-// (seams between polygons: no kerb is there to see) are left out; a stretch made of them only
-// is not returned.
-std::vector<BoundaryStretch> checkBoundary(const DrivableArea& area, const SurfaceEvidence& evidence,
-                                           const BoundaryDistance& drivableDistance, const ChangeOptions& options);
+// The verdicts of the polygons' boundary stretches, polygon by polygon. Samples that lie inside
+// another polygon (seams between polygons: no kerb is there to see) are left out; a stretch made
+// of them only is not returned. A stretch not contradicted on its own is where its polygon is
+// offset as a whole (PolygonOffset) and its edges lie where the offset puts them.
+std::vector<BoundaryStretch> checkBoundaries(const std::vector<DrivableArea>& areas, const SurfaceEvidence& evidence,
+                                             const BoundaryDistance& drivableDistance, const ChangeOptions& options);
 
 }  // namespace hdprior

@@ -20,8 +20,11 @@ std::string areaDetail(const DrivableAreaVerdict& v, const std::vector<BoundaryS
   }
   char b[200];
   if (!best) return "";
-  char what[80];
-  if (best->evidence == "road_across_gap")
+  char what[120];
+  if (best->evidence == "polygon_offset")
+    std::snprintf(what, sizeof what, "the whole area %.1f m off its kerbs (they lie x %+.1f, y %+.1f m from it)", best->polygonShift.norm(),
+                  best->polygonShift.x(), best->polygonShift.y());
+  else if (best->evidence == "road_across_gap")
     std::snprintf(what, sizeof what, "road across a %.1f m gap to the next area", best->offset);
   else
     std::snprintf(what, sizeof what, "kerb %.1f m %s its boundary", std::abs(best->offset), best->offset > 0 ? "outside" : "inside");

@@ -19,6 +19,17 @@ struct ChangeOptions {
   double edgeRange = 15.0;
   int minSamples = 5;              // a stretch needs this many observed (contradicting) samples for a verdict
   double contradictedShare = 0.4;  // of its observed samples, for the stretch to be contradicted
+  // A polygon shifted as a whole (PolygonOffset): one translation this long putting this share of
+  // its observed samples within the band of their edges, and moving this many of them by the
+  // band or more, of which no more than this share lie within the band of the map's boundary (on
+  // the stale tuning families, the shifted and narrowed polygons it finds read 0.92-1.0 and
+  // 0-0.12).
+  int polygonMinSamples = 10;
+  double polygonShift = 1.0;
+  double polygonFitBand = 0.5;
+  double polygonFitShare = 0.8;
+  double polygonMapShare = 0.25;
+  double polygonNeighbourhood = 20.0;  // metres: the other polygons' edges that tell a pose error from it
   double seamDepth = 0.5;       // a sample this far inside the union of the polygons is a seam between two
   double missingGap = 1.0;      // road cells this far outside every polygon are candidates of a missing area ...
   double missingMinDepth = 3.0; // ... which must reach this far out ...

@@ -41,6 +41,7 @@ json stretchFeature(const BoundaryStretch& s) {
                    {"kerb_points", s.curbPoints},
                    {"ground_offset_m", number(s.groundOffset)},
                    {"nearest_view_m", s.nearestView < 1e8 ? number(s.nearestView) : json(nullptr)}};
+  if (s.polygonShift.allFinite()) evidence["polygon_shift_m"] = {number(s.polygonShift.x()), number(s.polygonShift.y())};
   json properties = {{"element", "drivable_area"},
                      {"id", s.areaId},
                      {"stretch", s.index},

@@ -78,11 +78,10 @@ MapChangeReport judgeMapChanges(SurfaceEvidence evidence, const HdMap& map, cons
   MapChangeReport report;
   classifySurface(evidence, options);
   const BoundaryDistance& distance = map.boundaryDistance();
-  for (const DrivableArea& area : map.vectorMap().drivableAreas)
-    for (BoundaryStretch& s : checkBoundary(area, evidence, distance, options)) {
-      if (s.verdict != MapVerdict::Unobserved) report.observedBoundaryKm += s.observed * options.sampleSpacing / 1000.0;
-      report.stretches.push_back(std::move(s));
-    }
+  for (BoundaryStretch& s : checkBoundaries(map.vectorMap().drivableAreas, evidence, distance, options)) {
+    if (s.verdict != MapVerdict::Unobserved) report.observedBoundaryKm += s.observed * options.sampleSpacing / 1000.0;
+    report.stretches.push_back(std::move(s));
+  }
   report.drivableAreas = drivableAreaVerdicts(map.vectorMap(), report.stretches);
   report.missing = findMissingSurfaces(evidence, distance, map.hasGroundHeight() ? &map.groundHeight() : nullptr, options);
   report.evidence = std::move(evidence);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <unordered_set>
 
+#include "engine/sim/boundary_edit.h"
 #include "engine/sim/drivable_lookup.h"
 
 namespace hdprior {

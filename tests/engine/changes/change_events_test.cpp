@@ -35,19 +35,23 @@ TEST(ChangeEvents, AContradictedLaneLineIsOneEventAtItsBestFrame) {
 }
 
 // A contradicted drivable area says what its most confident stretch saw: a kerb off its boundary,
-// or road going on across a gap to the next polygon.
+// road going on across a gap to the next polygon, or the whole polygon off its kerbs.
 TEST(ChangeEvents, AContradictedDrivableAreaSaysWhatItsSurestStretchSaw) {
   MapChangeReport report;
-  report.drivableAreas = {{3, MapVerdict::Contradicted, 0.8, 0, 12}, {4, MapVerdict::Contradicted, 0.7, 0, 20}};
-  BoundaryStretch kerb, gap;
+  report.drivableAreas = {{3, MapVerdict::Contradicted, 0.8, 0, 12}, {4, MapVerdict::Contradicted, 0.7, 0, 20},
+                          {5, MapVerdict::Contradicted, 0.9, 0, 30}};
+  BoundaryStretch kerb, gap, shifted;
   kerb.areaId = 3, kerb.verdict = MapVerdict::Contradicted, kerb.offset = 2.1, kerb.confidence = 0.8, kerb.evidence = "road_beyond_boundary";
   gap.areaId = 4, gap.verdict = MapVerdict::Contradicted, gap.offset = 2.5, gap.confidence = 0.7, gap.evidence = "road_across_gap";
-  report.stretches = {kerb, gap, gap};
+  shifted.areaId = 5, shifted.verdict = MapVerdict::Contradicted, shifted.offset = -0.9, shifted.confidence = 0.9;
+  shifted.evidence = "polygon_offset", shifted.polygonShift = {0.6, -0.8};
+  report.stretches = {kerb, gap, gap, shifted, shifted, shifted};
   const std::vector<RunEvent> events = mapChangeEvents(report);
-  ASSERT_EQ(events.size(), 2u);
+  ASSERT_EQ(events.size(), 3u);
   EXPECT_EQ(events[0].detail, "drivable area 3: kerb 2.1 m outside its boundary, 1 stretch (confidence 0.80)");
   EXPECT_EQ(events[1].detail, "drivable area 4: road across a 2.5 m gap to the next area, 2 stretches (confidence 0.70)");
   EXPECT_EQ(events[1].frame, 20u);
+  EXPECT_EQ(events[2].detail, "drivable area 5: the whole area 1.0 m off its kerbs (they lie x +0.6, y -0.8 m from it), 3 stretches (confidence 0.90)");
 }
 
 TEST(ChangeEvents, SweepsLeftOutOneAfterAnotherAreOneEventAtTheFirst) {
