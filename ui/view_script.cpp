@@ -54,7 +54,8 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
       {"step-keyframe", {0, 0}}, {"keyframe", {1, 1}}, {"match", {0, 0}}, {"optimize", {0, 0}}, {"check-map", {0, 0}}, {"offset", {3, 3}},
       {"tab", {1, 1}}, {"report", {0, 0}}, {"odometry", {1, 3}}, {"use-odometry", {1, 1}}, {"plot", {2, 2}},
       {"events", {0, 0}}, {"next-event", {0, 0}}, {"prev-event", {0, 0}}, {"bookmark", {1, 64}}, {"compare", {1, 1}},
-      {"measure", {1, 4}}, {"pick", {2, 2}}, {"save-session", {1, 1}}, {"load-session", {1, 1}}};
+      {"measure", {1, 4}}, {"pick", {2, 2}}, {"save-session", {1, 1}}, {"load-session", {1, 1}},
+      {"ground-labels", {2, 2}}};
   const auto it = arity.find(verb);
   if (it == arity.end()) return "unknown command '" + verb + "'";
   const auto [least, most] = it->second;
@@ -62,6 +63,7 @@ std::string checkArguments(const std::string& verb, const std::vector<std::strin
     return "'" + verb + "' takes " + std::to_string(least) + (least == most ? "" : " to " + std::to_string(most)) + " argument(s)";
   if ((verb == "frame" || verb == "wait") && (!isInteger(a[0]) || a[0][0] == '-'))
     return "'" + verb + "' needs a non-negative integer";
+  if (verb == "ground-labels" && (!isInteger(a[1]) || a[1][0] == '-')) return "'ground-labels' needs FILE and a non-negative frame";
   if (verb == "step" && !isInteger(a[0])) return "'step' needs an integer";
   if (verb == "play" &&
       std::none_of(Playback::kSpeedNames.begin(), Playback::kSpeedNames.end(), [&](const char* n) { return a[0] == n; }))

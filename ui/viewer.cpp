@@ -14,6 +14,7 @@
 
 #include "engine/error.h"
 #include "engine/io/argoverse_log.h"
+#include "engine/io/ground_labels.h"
 #include "engine/map/hd_map.h"
 #include "render/png_writer.h"
 #include "render/renderer.h"
@@ -237,6 +238,13 @@ bool Viewer::runDebugCommand(const ScriptCommand& c) {
     std::printf("wrote %s\n", c.args[0].c_str());
   } else if (c.verb == "load-session") {
     restoreSession(readViewSession(c.args[0]), true);
+  } else if (c.verb == "ground-labels") {
+    const size_t frame = std::stoull(c.args[1]);
+    const ArgoverseLog& log = state_->log();
+    if (frame >= log.sweepCount())
+      fail("frame " + c.args[1] + " is out of range (the log has " + std::to_string(log.sweepCount()) + " sweeps)");
+    state_->showGroundLabels(readGroundLabels(c.args[0], log.sweep(frame)->points.size()), frame);
+    std::printf("ground labels of frame %zu\n", frame);
   } else {
     return false;
   }

@@ -319,6 +319,13 @@ TEST(ViewCommand, ShowsTheGroundSegmentationAgainstRealLabels) {
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_EQ(runWithDisplay("view " + quoted(sharedLog()) + " --frames 2 --exit --screenshot " + quoted(without), dir).status, 0);
   EXPECT_GT(greenPixels(readPng(with)), greenPixels(readPng(without)) + 2000);
+  // The same labels loaded by a script command, as a user does in a running session.
+  const fs::path scripted = dir / "scripted.png";
+  writeText(dir / "script.txt", "ground-labels " + labels.string() + " 0\nwait 1\nscreenshot " + scripted.string() + "\nexit\n");
+  const CommandResult s = runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt"), dir);
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_NE(s.out.find("ground labels of frame 0"), std::string::npos) << s.out;
+  EXPECT_GT(greenPixels(readPng(scripted)), greenPixels(readPng(without)) + 2000);
 }
 
 class ViewCommandBadInput : public ::testing::TestWithParam<BadInput> {};

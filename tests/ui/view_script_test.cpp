@@ -41,9 +41,10 @@ TEST(ViewScript, ParsesTheOdometryFileCommands) {
 TEST(ViewScript, ParsesTheDebuggingBenchCommands) {
   const auto commands = ui::parseViewScript(
       "plot chi2 on\nevents\nnext-event\nprev-event\nbookmark kerb looks off\ncompare b.json\nmeasure 1 2 3.5 -4\n"
-      "measure match\npick 10 -2.5\nsave-session s.json\nload-session s.json\ntab Compare\n",
+      "measure match\npick 10 -2.5\nsave-session s.json\nload-session s.json\ntab Compare\nground-labels flow_labels.feather 0\n",
       "s.txt");
-  ASSERT_EQ(commands.size(), 12u);
+  ASSERT_EQ(commands.size(), 13u);
+  EXPECT_EQ(commands[12].args, (std::vector<std::string>{"flow_labels.feather", "0"}));
   EXPECT_EQ(commands[4].args, (std::vector<std::string>{"kerb", "looks", "off"}));
   EXPECT_EQ(commands[6].args, (std::vector<std::string>{"1", "2", "3.5", "-4"}));
   EXPECT_EQ(commands[7].args, std::vector<std::string>{"match"});
@@ -81,6 +82,8 @@ TEST(ViewScript, RejectsBadLinesNamingTheLine) {
       {"odometry a.tum csv\n", "auto, tum or kitti"},
       {"odometry a.tum tum map\n", "first or city"},
       {"use-odometry maybe\n", "file or builtin"},
+      {"ground-labels labels.feather\n", "takes 2"},
+      {"ground-labels labels.feather -1\n", "a non-negative frame"},
   };
   for (const auto& [text, message] : bad) {
     try {
