@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/geom/planar_difference.h"
 #include "engine/geom/se2.h"
 #include "engine/map/ground_height.h"
 #include "engine/match/match_result.h"
@@ -18,8 +19,7 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   // Where the match observes nothing (along a corridor) its estimate is arbitrary: the prior's
   // place there is the odometry's, so the altitude is looked up where the vehicle most likely is.
   const Eigen::Vector3d predicted(odometryPose.translation().x(), odometryPose.translation().y(), yawOf(odometryPose));
-  Eigen::Vector3d offset = match.estimate - predicted;
-  offset.z() = std::remainder(offset.z(), 2.0 * std::numbers::pi);
+  const Eigen::Vector3d offset = planarDifference(match.estimate, predicted);
   const Eigen::Vector3d e = predicted + observedProjector(match.information) * offset;
   const double z = priorAltitude(ground, e.x(), e.y(), options.egoHeight);
   PosePrior prior;
@@ -66,7 +66,7 @@ PosePrior withIndependentMapError(const PosePrior& prior) {
 
 PriorResidual priorResidual(const PosePrior& prior, const SE3& pose) {
   PriorResidual r;
-  r.error(0) = std::remainder(yawOf(pose) - yawOf(prior.pose), 2.0 * std::numbers::pi);
+  r.error(0) = wrappedAngle(yawOf(pose) - yawOf(prior.pose));
   r.error.tail<3>() = pose.translation() - prior.pose.translation();
   r.chi2 = r.error.dot(prior.information * r.error);
   return r;

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "engine/geom/angles.h"
+#include "engine/geom/planar_difference.h"
 #include "engine/map/boundary_distance.h"
 #include "engine/map/drivable_raster.h"
 #include "engine/map/ndt_grid.h"
@@ -19,7 +20,6 @@
 namespace hdprior {
 namespace {
 
-double wrapAngle(double a) { return std::remainder(a, 2.0 * std::numbers::pi); }
 
 // Share of points on the drivable area, and how many distinct NDT cells they fall in.
 void placement(const NdtGrid& grid, const DrivableRaster& drivable, std::span<const Eigen::Vector2d> points,
@@ -88,7 +88,7 @@ const char* toString(MatchStatus status) {
 
 double predictionChi2(const Eigen::Vector3d& initial, const Eigen::Vector3d& estimate, const Eigen::Vector3d& sigma) {
   const Eigen::Vector2d d = Eigen::Rotation2Dd(-initial.z()) * (estimate.head<2>() - initial.head<2>());
-  const double dyaw = wrapAngle(estimate.z() - initial.z());
+  const double dyaw = wrappedAngle(estimate.z() - initial.z());
   return (d.x() * d.x()) / (sigma.x() * sigma.x()) + (d.y() * d.y()) / (sigma.y() * sigma.y()) +
          dyaw * dyaw / (sigma.z() * kDegree * sigma.z() * kDegree);
 }

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "engine/geom/angles.h"
+#include "engine/geom/planar_difference.h"
 #include "engine/geom/se2.h"
 
 namespace hdprior {
@@ -18,11 +19,11 @@ constexpr double kDriftPerMetre = 0.01;
 constexpr double kDriftPerRadianTurned = 0.02;
 constexpr double kYawDriftPerMetre = 0.01 * kDegree;
 
-// a - b with the yaw difference wrapped to [-pi, pi].
-Eigen::Vector3d planarDifference(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  Eigen::Vector3d d = a - b;
-  d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
-  return d;
+// Whether a prior places the vehicle (x, y known within 2 m in some direction): one of yaw alone
+// says nothing of how far the odometry has drifted.
+bool placesTheVehicle(const PosePrior& prior) {
+  const Eigen::Matrix2d xy = prior.information.block<2, 2>(1, 1);  // order: yaw, x, y, z
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(xy).eigenvalues().maxCoeff() >= 0.25;
 }
 
 }  // namespace
@@ -51,6 +52,7 @@ InnovationGate::Verdict InnovationGate::judge(size_t keyframe, const PosePrior& 
   gate_.update(t);
   challenger_.reset();
   run_.clear();
+  if (placesTheVehicle(prior)) gatedSinceAdmitted_ = false;
   v.admitted = true;
   return v;
 }
@@ -69,7 +71,8 @@ bool InnovationGate::followGatedRun(size_t keyframe, const PosePrior& prior, Ver
     challenger_->widen(kForgottenPose);
     challenger_->update(challenger_->innovation(prior));
     run_.clear();
-    runStart_ = {metres_, turned_};
+    if (!gatedSinceAdmitted_) runStart_ = {metres_, turned_};
+    gatedSinceAdmitted_ = true;
   }
   run_.push_back(keyframe);
   if (int(run_.size()) < reanchorPriors_) return false;
@@ -83,6 +86,7 @@ bool InnovationGate::followGatedRun(size_t keyframe, const PosePrior& prior, Ver
   v.reanchored.assign(run_.begin(), run_.end() - 1);
   challenger_.reset();
   run_.clear();
+  gatedSinceAdmitted_ = false;
   return true;
 }
 

@@ -53,12 +53,15 @@ class InnovationGate {
   PlanarKalman gate_;
   std::optional<PlanarKalman> challenger_;
   // Where the odometry alone puts the pose, and the metres and radians it has driven and turned
-  // since the start; at the current run's first prior. A run re-anchors only where the odometry
-  // could have drifted or slipped that far by then: a shifted polygon's priors disagree from where
-  // they begin, an odometry failure grows with the drive.
+  // since the start; at the first gated prior since the gate last let in one that places the vehicle. A run re-anchors only
+  // where the odometry could have drifted or slipped that far by then: a shifted polygon's priors
+  // disagree from where they begin, an odometry failure grows with the drive. Runs that break off
+  // and start again while nothing is let in keep that first reach, or a long drive on a shifted
+  // polygon would in the end be followed.
   Eigen::Vector3d odometry_ = Eigen::Vector3d::Zero();
   double metres_ = 0.0, turned_ = 0.0;
   Eigen::Vector2d runStart_ = Eigen::Vector2d::Zero();
+  bool gatedSinceAdmitted_ = false;
   std::vector<size_t> run_;  // keyframes of the gated priors that agree with the challenger
   double probability_ = 0.99;
   int reanchorPriors_ = 3;

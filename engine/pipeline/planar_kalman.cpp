@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "engine/geom/planar_difference.h"
 #include "engine/geom/se2.h"
 
 namespace hdprior {
@@ -97,8 +98,7 @@ PlanarKalman::Innovation PlanarKalman::innovation(const Eigen::Vector3d& prior, 
   n.mapSigma = mapErrorLength_ > 0.0 && mapSigma > 0.0 ? mapSigma : 0.0;
   const State s = atPrior(n.mapSigma);
   const Eigen::Matrix<double, 3, 5> J = observation(n.mapSigma > 0.0);
-  Eigen::Vector3d d = prior - J * s.mean;
-  d.z() = std::remainder(d.z(), 2.0 * std::numbers::pi);
+  const Eigen::Vector3d d = planarDifference(prior, J * s.mean);
   const int k = n.dof;
   const Eigen::MatrixXd H = n.basis.leftCols(k).transpose() * J;
   const Eigen::MatrixXd S = H * s.covariance * H.transpose() + Eigen::MatrixXd(priorVariance.head(k).asDiagonal());

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "engine/error.h"
+#include "engine/geom/planar_difference.h"
 
 namespace hdprior {
 namespace {
@@ -105,7 +106,7 @@ PoseTrajectory routeTrajectory(const LaneGraph& lanes, const GroundHeight& groun
     size_t a = i, b = i;
     while (a > 0 && st[i].s - st[a].s < 4.0) --a;
     while (b + 1 < st.size() && st[b].s - st[i].s < 4.0) ++b;
-    double turn = std::remainder(headingAt(st, b, 2.0) - headingAt(st, a, 2.0), 2 * std::numbers::pi);
+    double turn = wrappedAngle(headingAt(st, b, 2.0) - headingAt(st, a, 2.0));
     const double curvature = std::abs(turn) / std::max(1.0, st[b].s - st[a].s);
     st[i].vmax = std::min(o.cruiseSpeed, std::sqrt(o.lateralAccel / std::max(curvature, 1e-6)));
     st[i].vmax = std::max(st[i].vmax, 2.0);
@@ -152,7 +153,7 @@ PoseTrajectory routeTrajectory(const LaneGraph& lanes, const GroundHeight& groun
     const double g = std::clamp((s - st[j].s) / std::max(1e-9, st[j + 1].s - st[j].s), 0.0, 1.0);
     const Vec2 xy = (1 - g) * st[j].xy + g * st[j + 1].xy;
     const double yaw0 = headingAt(st, j, 1.0);
-    const double yaw = yaw0 + g * std::remainder(headingAt(st, j + 1, 1.0) - yaw0, 2 * std::numbers::pi);
+    const double yaw = yaw0 + g * wrappedAngle(headingAt(st, j + 1, 1.0) - yaw0);
     const double z = ground.bilinearAt(xy);
     if (std::isnan(z)) throw Error(ground.source(), "no ground height under the route");
     RollPitch rp = ground.rollPitchAt(xy, yaw, 2.0);

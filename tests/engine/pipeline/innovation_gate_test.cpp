@@ -116,5 +116,18 @@ TEST(InnovationGate, ARunReanchorsOnlyWhereTheOdometryCouldHaveDriftedThatFar) {
   for (int k = 10; k < 40; ++k) EXPECT_FALSE(early[k].admitted) << k;
 }
 
+// A polygon shifted 4 m from 20 m on, with every eighth prior farther still: the run breaks off
+// and starts again, by 130 m where the odometry could have drifted 4 m. Nothing has been let in
+// since 20 m, so each new run keeps the reach of the first gated prior and stays out.
+double shiftedAfter20mBrokenRuns(int k) { return k < 10 ? 0.0 : k % 8 == 0 ? 8.0 : 4.0; }
+
+TEST(InnovationGate, RunsThatStartAgainKeepTheReachOfTheFirstGatedPrior) {
+  const auto v = drive(80, 3, onTheRoad, shiftedAfter20mBrokenRuns);
+  for (int k = 10; k < 80; ++k) {
+    EXPECT_FALSE(v[k].admitted) << k;
+    EXPECT_TRUE(v[k].reanchored.empty()) << k;
+  }
+}
+
 }  // namespace
 }  // namespace hdprior
