@@ -328,6 +328,20 @@ TEST(ViewCommand, ShowsTheGroundSegmentationAgainstRealLabels) {
   EXPECT_GT(greenPixels(readPng(scripted)), greenPixels(readPng(without)) + 2000);
 }
 
+// A script's labels that are missing or of a sweep the log lacks: one line naming it, exit 2.
+TEST(ViewCommand, ScriptedGroundLabelsOfAMissingFileOrFrameFailWithOneLine) {
+  const fs::path dir = freshOutputDir("view_ground_labels_bad");
+  const fs::path labels = sharedDataDir() / "labels/7fab2350-7eaf-3b7e-a39d-6937a4c1bede/flow_labels.feather";
+  for (const auto& [line, message] : {std::pair<std::string, std::string>{"ground-labels " + (dir / "nope.feather").string() + " 0", "nope.feather"},
+                                      {"ground-labels " + labels.string() + " 5", "frame 5 is out of range"}}) {
+    writeText(dir / "script.txt", line + "\nexit\n");
+    const CommandResult r = runWithDisplay("view " + quoted(sharedLog()) + " --script " + quoted(dir / "script.txt"), dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
 class ViewCommandBadInput : public ::testing::TestWithParam<BadInput> {};
 
 // Refused before any window opens: one line, exit 2, no display needed.
