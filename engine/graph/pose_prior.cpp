@@ -27,7 +27,10 @@ PosePrior makePosePrior(const MatchResult& match, const SE3& odometryPose, const
   prior.pose.translation() = Eigen::Vector3d(e.x(), e.y(), std::isfinite(z) ? z : odometryPose.translation().z());
   // Match information is over (x, y, yaw); reorder to (yaw, x, y) and add z.
   const int order[3] = {1, 2, 0};  // match index -> prior index
-  const Eigen::Vector3d along(std::cos(e.z()), std::sin(e.z()), 0.0);
+  // The vehicle's heading, not the prior's yaw: where the match does not observe yaw, the prior's is
+  // any point of its constraint, tens of degrees from the heading, and the along-track sigma would
+  // blur the lateral place it observes.
+  const Eigen::Vector3d along(std::cos(predicted.z()), std::sin(predicted.z()), 0.0);
   const Eigen::Matrix3d information = withVarianceAlong(match.informationGivenMap, along, options.alongTrackSigma);
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) prior.information(order[r], order[c]) = information(r, c);

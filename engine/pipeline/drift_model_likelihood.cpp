@@ -53,7 +53,9 @@ void DriftModelLikelihood::observe(const PosePrior& prior) {
 
 void DriftModelLikelihood::restartAt(const PosePrior& prior) {
   restarted_ = true;
-  for (PlanarKalman& f : filters_) {
+  for (size_t i = 0; i < filters_.size(); ++i) {
+    PlanarKalman& f = filters_[i];
+    candidates_[i].logLikelihood += f.innovation(prior).logDensity;
     f.widen(kForgottenPose);
     f.update(f.innovation(prior));
   }

@@ -29,9 +29,11 @@ class DriftModelLikelihood {
 
   void step(const Keyframe& keyframe);
   void observe(const PosePrior& prior);
-  // After an odometry slip the innovation gate re-anchored on (InnovationGate): each filter starts
-  // again at the prior, which counts for no candidate: a slip is not drift. From then on no
-  // candidate tighter than the configured model is picked.
+  // After a run of priors the innovation gate re-anchored on (InnovationGate): each filter starts
+  // again at the prior. The prior still counts for every candidate: after a stretch without priors
+  // it is the one sign of how far the odometry drifted there, and without it a drifting odometry
+  // was scored only on the priors close together after it, which no candidate tells apart. From
+  // then on no candidate tighter than the configured model is picked.
   void restartAt(const PosePrior& prior);
 
   // The configured options with the likeliest candidate's per-metre sigmas and map error length.

@@ -179,6 +179,20 @@ TEST(PosePrior, TheAlongTrackSigmaWidensOnlyTheDirectionOfTheHeading) {
   EXPECT_NEAR(I(0, 0), 3000.0, 1e-9);
 }
 
+TEST(PosePrior, TheAlongTrackSigmaFollowsTheHeadingWhereTheMatchLeavesYawFree) {
+  // A match that observes one combination, the lateral place 1.2 m ahead (y + 1.2 yaw), 2.4 m off:
+  // its prior's yaw is a point of that constraint far from the heading (0 here), and the along-track
+  // sigma must not widen the lateral place it observes.
+  const Eigen::Vector3d n = Eigen::Vector3d(0.0, 1.0, 1.2).normalized();
+  MatchResult match;
+  match.estimate = Eigen::Vector3d(0.0, 2.4, 0.0);
+  match.information = match.informationGivenMap = 40.0 * n * n.transpose();
+  const GroundHeight none;
+  const PosePrior prior = makePosePrior(match, poseOf(0, 0, 0, 0), none, {.alongTrackSigma = 1.0});
+  EXPECT_GT(std::abs(yawOf(prior.pose)), 0.5);
+  EXPECT_TRUE(planarInformation(prior).isApprox(match.information, 1e-12));
+}
+
 TEST(PosePrior, ADegenerateMatchTakesItsAlongTrackPlaceAndAltitudeFromTheOdometry) {
   const ArgoverseLog log(test::sharedLog());
   const GroundHeight ground = readGroundHeight(log.mapFiles().groundHeight, log.mapFiles().sim2);

@@ -129,5 +129,20 @@ TEST(InnovationGate, RunsThatStartAgainKeepTheReachOfTheFirstGatedPrior) {
   }
 }
 
+// The same polygon shifted 2 m from 20 m on, and at 120 m one prior on the road that fixes one
+// direction only (the tests' priors are lateral). It is let in, but one combination agreeing says
+// too little to count the reach again from there: the run after it stays out, where the drive's
+// 120 m would have reached 2 m.
+double shiftedAfter20mButOneAt120m(int k) { return k >= 10 && k != 60 ? 2.0 : 0.0; }
+
+TEST(InnovationGate, APriorThatFixesOneDirectionDoesNotRestartTheReach) {
+  const auto v = drive(80, 3, onTheRoad, shiftedAfter20mButOneAt120m);
+  EXPECT_TRUE(v[60].admitted);
+  for (int k = 61; k < 80; ++k) {
+    EXPECT_FALSE(v[k].admitted) << k;
+    EXPECT_TRUE(v[k].reanchored.empty()) << k;
+  }
+}
+
 }  // namespace
 }  // namespace hdprior

@@ -156,6 +156,23 @@ TEST(DriftModelLikelihood, AfterARestartTheModelIsNoTighterThanTheConfigured) {
   EXPECT_EQ(drifting.likeliest().odometryRotationSigmaDegPerM, before);
 }
 
+// A re-anchor after a stretch without priors: the odometry drifted 1.3 m there, and the prior that
+// re-anchors is the one that shows it. It counts for every candidate, so the model is no longer the
+// configured one the few priors before the stretch could not tell from a loose one.
+TEST(DriftModelLikelihood, ThePriorThatReanchorsIsEvidenceOfTheDrift) {
+  const PoseGraphOptions configured;  // 1e-4 per metre
+  DriftModelLikelihood likelihood(configured, Eigen::Vector3d::Zero());
+  Keyframe kf;
+  kf.previousTThis = forward(2.0, 0.02 * kDegree);
+  kf.relativeCovariance = Matrix6d::Identity() * 1e-8;
+  for (int k = 1; k <= 60; ++k) {
+    likelihood.step(kf);
+    if (k <= 10) likelihood.observe(lateralPrior(2.0 * k, 0.0, 0.1, 0.0));
+  }
+  likelihood.restartAt(lateralPrior(120.0, 0.0, 0.1, 0.0));
+  EXPECT_GE(likelihood.likeliest().odometryRotationSigmaDegPerM, 10.0 * configured.odometryRotationSigmaDegPerM);
+}
+
 // scored() is what metrics.json shows: each candidate's log-likelihood, and one chosen, the one the
 // final solve takes (the tightest within the margin of the likeliest).
 TEST(DriftModelLikelihood, ScoredShowsEveryCandidateAndTheOneChosen) {
