@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "engine/geom/angles.h"
+#include "engine/geom/information.h"
 #include "engine/geom/planar_difference.h"
 #include "engine/geom/se2.h"
 
@@ -26,8 +27,7 @@ constexpr double kYawDriftPerMetre = 0.01 * kDegree;
 // on the true road at 200 m, then followed a polygon shifted 2.4 m with 200 m of reach.
 bool placesTheVehicle(const PosePrior& prior) {
   const Eigen::Matrix2d xy = prior.information.block<2, 2>(1, 1);  // order: yaw, x, y, z
-  const Eigen::Vector3d planar = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(prior.information.topLeftCorner<3, 3>()).eigenvalues();
-  const int observed = int((planar.array() > 1e-9 * planar.maxCoeff()).count());
+  const long observed = std::lround(observedProjector(prior.information.topLeftCorner<3, 3>()).trace());  // its rank
   return observed >= 2 && Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(xy).eigenvalues().maxCoeff() >= 0.25;
 }
 
